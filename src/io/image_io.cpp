@@ -1,0 +1,108 @@
+#include "io/image_io.h"
+
+#include <stb/stb_image_write.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "error.h"
+
+namespace vct {
+
+static_assert(std::endian::native == std::endian::little, "PFM writing assumes a little-endian host");
+
+void writeFileAtomically(const std::string& path, const std::string& bytes) {
+    const std::string temporary = path + ".tmp." + std::to_string(getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) throw Error("cannot create '" + temporary + "': " + std::strerror(errno));
+        out.write(bytes.data(), std::streamsize(bytes.size()));
+        out.flush();
+        if (!out) {
+            std::remove(temporary.c_str());
+            throw Error("cannot write '" + temporary + "': " + std::strerror(errno));
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string reason = std::strerror(errno);
+        std::remove(temporary.c_str());
+        throw Error("cannot rename '" + temporary + "' to '" + path + "': " + reason);
+    }
+}
+
+void writePfm(const std::string& path, const Image& image) {
+    std::string bytes = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+    const size_t rowFloats = size_t(image.width) * 3;
+    for (uint32_t row = 0; row < image.height; ++row) {
+        const float* source = image.rgb.data() + size_t(image.height - 1 - row) * rowFloats;  // bottom row first
+        bytes.append(reinterpret_cast<const char*>(source), rowFloats * sizeof(float));
+    }
+    writeFileAtomically(path, bytes);
+}
+
+Image readPfm(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error("cannot open '" + path + "'");
+    std::string magic;
+    double scale = 0.0;
+    Image image;
+    in >> magic >> image.width >> image.height >> scale;
+    in.get();  // the single whitespace character after the scale
+    if (!in || magic != "PF" || image.width == 0 || image.height == 0 || image.width > 65536 ||
+        image.height > 65536)
+        throw Error("'" + path + "' is not an RGB PFM file");
+    if (scale > 0.0) throw Error("'" + path + "' is a big-endian PFM, which is not supported");
+    const size_t rowFloats = size_t(image.width) * 3;
+    image.rgb.resize(rowFloats * image.height);
+    for (uint32_t row = 0; row < image.height; ++row) {
+        float* target = image.rgb.data() + size_t(image.height - 1 - row) * rowFloats;
+        in.read(reinterpret_cast<char*>(target), std::streamsize(rowFloats * sizeof(float)));
+    }
+    if (!in) throw Error("'" + path + "' is truncated");
+    return image;
+}
+
+// Narkowicz's fit of the ACES filmic curve: a familiar look, monotonic, maps [0, ∞) to [0, 1).
+static float tonemapAces(float x) {
+    x = std::max(x, 0.0f) * 0.6f;
+    return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+}
+
+static float encodeSrgb(float linear) {
+    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+void writePng(const std::string& path, const Image& image, float exposure) {
+    std::vector<uint8_t> pixels(size_t(image.width) * image.height * 3);
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        const float value = std::isfinite(image.rgb[i]) ? image.rgb[i] : 0.0f;
+        pixels[i] = uint8_t(std::lround(255.0f * encodeSrgb(tonemapAces(value * exposure))));
+    }
+    std::string bytes;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &bytes, int(image.width), int(image.height), 3, pixels.data(),
+                                int(image.width * 3)))
+        throw Error("cannot encode PNG for '" + path + "'");
+    writeFileAtomically(path, bytes);
+}
+
+void writeImage(const std::string& path, const Image& image, float exposure) {
+    auto endsWith = [&](const char* suffix) {
+        const size_t n = std::strlen(suffix);
+        return path.size() >= n && std::equal(path.end() - long(n), path.end(), suffix,
+                                              [](char a, char b) { return std::tolower(a) == b; });
+    };
+    if (endsWith(".pfm")) return writePfm(path, image);
+    if (endsWith(".png")) return writePng(path, image, exposure);
+    throw Error("cannot write '" + path + "': the output must end in .pfm or .png");
+}
+
+}  // namespace vct

@@ -1,0 +1,36 @@
+// Image files: PFM for linear radiance, PNG for people.
+//
+// Images in memory are RGB float, rows top-to-bottom (row 0 is the top of the picture).
+// Files are written to a temporary file beside the target and renamed, so an interrupted
+// run never leaves a truncated file or clobbers a good one.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct Image {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<float> rgb;  // width × height × 3, top row first
+
+    float* pixel(uint32_t x, uint32_t y) { return &rgb[(size_t(y) * width + x) * 3]; }
+    const float* pixel(uint32_t x, uint32_t y) const { return &rgb[(size_t(y) * width + x) * 3]; }
+};
+
+// Writes standard PFM: "PF", little-endian (scale −1), rows bottom-to-top.
+void writePfm(const std::string& path, const Image& image);
+Image readPfm(const std::string& path);
+
+// Writes an 8-bit sRGB PNG: radiance × exposure, ACES-fitted tone curve, sRGB encoding.
+void writePng(const std::string& path, const Image& image, float exposure = 1.0f);
+
+// Writes PFM or PNG depending on the extension; throws vct::Error for anything else.
+void writeImage(const std::string& path, const Image& image, float exposure = 1.0f);
+
+// Writes `bytes` to `path` through a temporary file and an atomic rename.
+void writeFileAtomically(const std::string& path, const std::string& bytes);
+
+}  // namespace vct

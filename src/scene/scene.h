@@ -1,0 +1,108 @@
+// The renderer's scene: what every pass and the path tracer agree on.
+//
+// Geometry is flattened to world space at load time (node transforms applied, normals
+// transformed by the inverse transpose), so a triangle is three indices into `vertices`
+// plus one material index. Units are the scene's own: lengths in metres, light
+// intensities as KHR_lights_punctual defines them (point/spot: candela = W/sr in our
+// radiometric reading, directional: lux = W/m²), emission as radiance.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace vct {
+
+// 32 bytes, laid out as two vec4 so the GPU can read it from a storage buffer (std430).
+struct Vertex {
+    glm::vec3 position{0.0f};
+    float u = 0.0f;
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    float v = 0.0f;
+};
+
+// glTF pbrMetallicRoughness, plus emission and KHR_materials_specular's weight.
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};  // linear RGB + alpha
+    int baseColorTexture = -1;        // index into Scene::textures, -1 = none
+    float metallic = 1.0f;            // glTF defaults
+    float roughness = 1.0f;
+    // KHR_materials_specular specularFactor: 1 = glTF default dielectric (F0 = 0.04),
+    // 0 = pure Lambertian (used by the Cornell box, whose reflectances are diffuse).
+    float specularWeight = 1.0f;
+    glm::vec3 emission{0.0f};  // emissiveFactor × KHR_materials_emissive_strength: radiance
+    bool doubleSided = false;
+};
+
+// An 8-bit RGBA image holding sRGB-encoded base colour (glTF stores base colour textures in sRGB).
+struct Texture {
+    std::string name;  // the URI or a description, for messages
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<uint8_t> rgba8;
+};
+
+enum class LightType : uint32_t { Directional = 0, Point = 1, Spot = 2 };
+
+// KHR_lights_punctual, already placed in world space.
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;          // cd for point/spot, lux for directional
+    glm::vec3 position{0.0f};        // point and spot
+    glm::vec3 direction{0, 0, -1};   // direction the light travels (node's −Z), directional and spot
+    float range = 0.0f;              // 0 = infinite
+    float innerConeAngle = 0.0f;     // spot, radians
+    float outerConeAngle = 0.785398163f;  // spot, radians (π/4, the glTF default)
+};
+
+// A glTF perspective camera, placed in world space. It looks down its local −Z with +Y up.
+struct Camera {
+    std::string name;
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float yfov = 0.8f;    // radians, vertical
+    float znear = 0.01f;
+    float zfar = 0.0f;    // 0 = infinite (glTF), the renderer then fits it to the scene
+};
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    glm::vec3 extent() const { return max - min; }
+};
+
+struct Scene {
+    std::string name;  // file path or built-in name, for messages
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;            // 3 per triangle
+    std::vector<uint32_t> triangleMaterials;  // 1 per triangle, index into materials
+    std::vector<Material> materials;          // never empty after loading (a default is added)
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;              // the first is the default view
+    std::vector<std::string> warnings;        // non-fatal problems met while loading
+
+    size_t triangleCount() const { return indices.size() / 3; }
+    Bounds bounds() const;
+};
+
+// Computes the axis-aligned bounds of all vertices (zero bounds for an empty scene).
+inline Bounds Scene::bounds() const {
+    if (vertices.empty()) return {};
+    Bounds b{vertices[0].position, vertices[0].position};
+    for (const Vertex& v : vertices) {
+        b.min = glm::min(b.min, v.position);
+        b.max = glm::max(b.max, v.position);
+    }
+    return b;
+}
+
+}  // namespace vct
