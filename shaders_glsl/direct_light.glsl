@@ -1,0 +1,66 @@
+// Direct light from KHR_lights_punctual lights at a surface point.
+// Requires: lights[] (GpuLight), frame, and shadows.glsl's bindings.
+#ifndef VCT_DIRECT_LIGHT_GLSL
+#define VCT_DIRECT_LIGHT_GLSL
+
+#include "brdf.h"
+#include "lights.h"
+#include "shadows.glsl"
+
+struct SurfacePoint {
+    vec3 position;
+    vec3 normal;     // unit, facing the viewer
+    vec3 toViewer;   // unit
+    vec3 baseColor;
+    float metallic;
+    float roughness;
+    float specularWeight;
+};
+
+// Direction to the light, and the irradiance it gives a surface facing it (before cosθ and shadows).
+vec3 incidentLight(GpuLight light, vec3 position, out vec3 toLight, out float distanceToLight) {
+    uint type = uint(light.radiantIntensity.w);
+    if (type == LIGHT_DIRECTIONAL) {
+        toLight = -light.direction.xyz;
+        distanceToLight = 1e30f;
+        return light.radiantIntensity.rgb;
+    }
+    vec3 offset = light.positionRange.xyz - position;
+    float distanceSquared = max(dot(offset, offset), 1e-12f);
+    distanceToLight = sqrt(distanceSquared);
+    toLight = offset / distanceToLight;
+    float attenuation = rangeAttenuation(distanceToLight, light.positionRange.w) / distanceSquared;
+    if (type == LIGHT_SPOT)
+        attenuation *= spotAttenuation(light.direction.xyz, -toLight, light.spotShadow.x, light.spotShadow.y);
+    return light.radiantIntensity.rgb * attenuation;
+}
+
+// Reflected radiance towards the viewer from all lights, split by the SHOW_DIRECT_* flags.
+vec3 directLight(SurfacePoint surface, uint flags) {
+    vec3 radiance = vec3(0.0f);
+    float NdotV = max(dot(surface.normal, surface.toViewer), 1e-4f);
+    for (uint i = 0u; i < frame.counts.x; ++i) {
+        GpuLight light = lights[i];
+        vec3 toLight;
+        float distanceToLight;
+        vec3 irradiance = incidentLight(light, surface.position, toLight, distanceToLight);
+        float NdotL = dot(surface.normal, toLight);
+        if (NdotL <= 0.0f || dot(irradiance, irradiance) <= 0.0f) continue;
+        float visibility = shadowVisibility(light, surface.position, surface.normal, distanceToLight);
+        if (visibility <= 0.0f) continue;
+
+        vec3 H = normalize(surface.toViewer + toLight);
+        float NdotH = max(dot(surface.normal, H), 0.0f);
+        float VdotH = max(dot(surface.toViewer, H), 0.0f);
+        vec3 brdf = vec3(0.0f);
+        if ((flags & SHOW_DIRECT_DIFFUSE) != 0u)
+            brdf += brdfDiffuse(surface.baseColor, surface.metallic, surface.specularWeight, VdotH);
+        if ((flags & SHOW_DIRECT_SPECULAR) != 0u)
+            brdf += brdfSpecular(surface.baseColor, surface.metallic, surface.roughness, surface.specularWeight, NdotL,
+                                 NdotV, NdotH, VdotH);
+        radiance += brdf * irradiance * (NdotL * visibility);
+    }
+    return radiance;
+}
+
+#endif

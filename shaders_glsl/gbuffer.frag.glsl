@@ -1,0 +1,39 @@
+#version 460
+// G-buffer: world position + material index, shading normal + front-face flag, base colour.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.h"
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
+// Triangles are drawn one material at a time, so the texture index is dynamically uniform
+// (no descriptor-indexing feature needed: lavapipe has none).
+layout(push_constant) uniform Push { uint materialIndex; };
+layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
+layout(set = 1, binding = 0) uniform sampler2D baseColorTextures[TEXTURE_COUNT];
+
+layout(location = 0) in vec3 worldPosition;
+layout(location = 1) in vec3 worldNormal;
+layout(location = 2) in vec2 uv;
+
+layout(location = 0) out vec4 outPosition;   // xyz, w = material index + 1 (0 = nothing)
+layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = 1 on the front face
+layout(location = 2) out vec4 outBaseColor;  // linear rgb, a
+
+void main() {
+    GpuMaterial material = materials[materialIndex];
+    vec4 baseColor = material.baseColorFactor;
+    if (material.baseColorTexture >= 0)
+        baseColor *= texture(baseColorTextures[material.baseColorTexture], uv);
+
+    // Surfaces reflect on both sides (as in the reference path tracer); emission leaves the front only.
+    vec3 normal = worldNormal;
+    float lengthSquared = dot(normal, normal);
+    normal = lengthSquared > 1e-20f ? normal * inversesqrt(lengthSquared) : vec3(0.0f, 1.0f, 0.0f);
+    vec3 toCamera = frame.cameraPosition.xyz - worldPosition;
+    bool frontFace = dot(normal, toCamera) >= 0.0f;
+    if (!frontFace) normal = -normal;
+
+    outPosition = vec4(worldPosition, float(materialIndex + 1u));
+    outNormal = vec4(normal, frontFace ? 1.0f : 0.0f);
+    outBaseColor = baseColor;
+}

@@ -1,0 +1,19 @@
+#version 460
+// G-buffer: vertices are pulled from the scene's storage buffer (already in world space).
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.h"
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = 1) readonly buffer Vertices { GpuVertex vertices[]; };
+
+layout(location = 0) out vec3 worldPosition;
+layout(location = 1) out vec3 worldNormal;
+layout(location = 2) out vec2 uv;
+
+void main() {
+    GpuVertex vertex = vertices[gl_VertexIndex];
+    worldPosition = vertex.positionU.xyz;
+    worldNormal = vertex.normalV.xyz;
+    uv = vec2(vertex.positionU.w, vertex.normalV.w);
+    gl_Position = frame.viewProjection * vec4(worldPosition, 1.0f);
+}

@@ -1,0 +1,17 @@
+#version 460
+// Each output pixel is the average of its supersampled square: a box filter over factor × factor
+// samples, so a pixel means the mean radiance over its area, as the path tracer computes it.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 0) uniform sampler2D supersampled;
+layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D resolved;
+layout(push_constant) uniform Push { uint factor; };
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, imageSize(resolved)))) return;
+    vec3 sum = vec3(0.0f);
+    for (uint y = 0u; y < factor; ++y)
+        for (uint x = 0u; x < factor; ++x)
+            sum += texelFetch(supersampled, pixel * int(factor) + ivec2(x, y), 0).rgb;
+    imageStore(resolved, pixel, vec4(sum / float(factor * factor), 1.0f));
+}

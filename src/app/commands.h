@@ -1,0 +1,11 @@
+// The subcommands of `vct`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vct {
+
+int runRender(const std::vector<std::string>& arguments);
+
+}  // namespace vct

@@ -1,0 +1,46 @@
+// vct: a real-time global-illumination renderer based on voxel cone tracing.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "error.h"
+
+static void printUsage() {
+    std::printf(
+        "usage: vct <command> [options]\n"
+        "\n"
+        "commands:\n"
+        "  render   render one image to a .pfm (linear radiance) or .png file (vct render --help)\n"
+        "\n"
+        "Errors are reported as one sentence and exit code 1.\n");
+}
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        printUsage();
+        return 1;
+    }
+    const std::string command = argv[1];
+    const std::vector<std::string> arguments(argv + 2, argv + argc);
+    try {
+        if (command == "render") return vct::runRender(arguments);
+        if (command == "--help" || command == "-h" || command == "help") {
+            printUsage();
+            return 0;
+        }
+        std::fprintf(stderr, "vct: unknown command '%s'\n", command.c_str());
+        printUsage();
+        return 1;
+    } catch (const vct::Error& error) {
+        std::fprintf(stderr, "vct %s: error: %s\n", command.c_str(), error.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "vct %s: error: out of memory\n", command.c_str());
+        return 1;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "vct %s: internal error: %s\n", command.c_str(), error.what());
+        return 1;
+    }
+}

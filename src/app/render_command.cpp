@@ -1,0 +1,57 @@
+// vct render: one image, written as linear radiance (.pfm) or tone-mapped sRGB (.png).
+#include <chrono>
+#include <cstdio>
+
+#include "app/commands.h"
+#include "app/scene_setup.h"
+#include "error.h"
+#include "render/renderer.h"
+
+namespace vct {
+
+static void printHelp() {
+    std::printf("usage: vct render --out FILE.pfm|FILE.png [options]\n\n%s"
+                "  --exposure F             PNG only: radiance multiplier before tone mapping (default 1)\n"
+                "  --frames N               render N frames, keep the last (default 1)\n",
+                sceneOptionsHelp().c_str());
+}
+
+int runRender(const std::vector<std::string>& rawArguments) {
+    const auto start = std::chrono::steady_clock::now();
+    std::set<std::string> flags = sceneFlagNames();
+    flags.insert("help");
+    std::set<std::string> valued = sceneOptionNames();
+    valued.insert({"out", "exposure", "frames"});
+    const Arguments arguments(rawArguments, flags, valued);
+    if (arguments.has("help")) {
+        printHelp();
+        return 0;
+    }
+    if (!arguments.has("out")) throw Error("render needs --out FILE.pfm or FILE.png");
+    const std::string outPath = arguments.text("out", "");
+    const float exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
+    const uint32_t frames = arguments.unsignedInt("frames", 1, 1, 100000);
+
+    const Scene scene = loadSceneFromArguments(arguments);
+    const RenderSettings settings = renderSettingsFromArguments(arguments);
+    GpuContext context(contextOptionsFromArguments(arguments));
+    context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
+    std::printf("scene %s: %zu triangles, %zu lights, on %s\n", scene.name.c_str(), scene.triangleCount(),
+                scene.lights.size(), context.deviceName().c_str());
+
+    Renderer renderer(context, scene, settings);
+    FrameStats stats;
+    for (uint32_t frame = 0; frame < frames; ++frame) stats = renderer.renderFrame();
+    const Image image = renderer.readImage();
+    writeImage(outPath, image, exposure);
+
+    for (const PassTime& pass : stats.passes) std::printf("  %-10s %8.3f ms GPU\n", pass.name.c_str(), pass.milliseconds);
+    for (const std::string& pass : stats.skipped) std::printf("  %-10s  skipped\n", pass.c_str());
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width,
+                image.height, renderModeName(settings.mode), total, stats.gpuMilliseconds());
+    if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
+    return 0;
+}
+
+}  // namespace vct

@@ -1,0 +1,29 @@
+// Recording and submitting work, and the barriers between passes.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+
+#include "gpu/context.h"
+
+namespace vct {
+
+// Records `record` into a fresh command buffer, submits it and waits, with a bounded wait:
+// a GPU that does not finish within context.fenceTimeoutSeconds is a vct::Error, not a hang.
+void submitAndWait(GpuContext& context, const std::function<void(VkCommandBuffer)>& record);
+
+// Waits for `fence` at most context.fenceTimeoutSeconds; throws a clear error otherwise.
+void waitForFence(GpuContext& context, VkFence fence);
+
+// One image layout transition with synchronization2 masks.
+void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags aspect, VkImageLayout oldLayout,
+                  VkImageLayout newLayout, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess, uint32_t baseMip = 0,
+                  uint32_t mipCount = VK_REMAINING_MIP_LEVELS);
+
+// A global memory barrier (buffer and image writes of one pass made visible to the next).
+void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+
+}  // namespace vct

@@ -1,0 +1,247 @@
+#include "gpu/pipelines.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "gpu/vk_check.h"
+
+namespace vct {
+
+std::string spirvDirectory() {
+    if (const char* fromEnvironment = std::getenv("VCT_SPIRV_DIR")) return fromEnvironment;
+    std::error_code error;
+    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        for (std::filesystem::path folder = executable.parent_path(); !folder.empty() && folder != folder.root_path();
+             folder = folder.parent_path()) {
+            if (std::filesystem::exists(folder / "spirv" / "gbuffer.vert.spv")) return (folder / "spirv").string();
+        }
+    }
+    return std::string(VCT_SOURCE_DIR) + "/spirv";
+}
+
+VkShaderModule loadShaderModule(GpuContext& context, const std::string& name) {
+    const std::string path = spirvDirectory() + "/" + name + ".spv";
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    if (!file) throw Error("cannot open the shader '" + path + "' (set VCT_SPIRV_DIR to the spirv/ folder)");
+    const std::streamsize size = file.tellg();
+    if (size <= 0 || size % 4 != 0) throw Error("the shader '" + path + "' is not SPIR-V");
+    std::vector<uint32_t> code(size_t(size) / 4);
+    file.seekg(0);
+    file.read(reinterpret_cast<char*>(code.data()), size);
+    if (!file || code[0] != 0x07230203u) throw Error("the shader '" + path + "' is not SPIR-V");
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = size_t(size);
+    info.pCode = code.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(context.device, &info, nullptr, &module));
+    return module;
+}
+
+VkDescriptorSetLayout createPushDescriptorLayout(GpuContext& context, const std::vector<Binding>& bindings) {
+    std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+    for (const Binding& binding : bindings)
+        layoutBindings.push_back({binding.binding, binding.type, binding.count, binding.stages, nullptr});
+    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    info.bindingCount = uint32_t(layoutBindings.size());
+    info.pBindings = layoutBindings.data();
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
+    return layout;
+}
+
+VkPipelineLayout createPipelineLayout(GpuContext& context, const std::vector<VkDescriptorSetLayout>& setLayouts,
+                                      uint32_t pushConstantBytes) {
+    const VkPushConstantRange range{VK_SHADER_STAGE_ALL, 0, pushConstantBytes};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = uint32_t(setLayouts.size());
+    info.pSetLayouts = setLayouts.data();
+    info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
+    info.pPushConstantRanges = &range;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
+    return layout;
+}
+
+VkPipeline createComputePipeline(GpuContext& context, VkPipelineLayout layout, const std::string& shaderName) {
+    VkShaderModule module = loadShaderModule(context, shaderName);
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult result = vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    vkDestroyShaderModule(context.device, module, nullptr);
+    VK_CHECK(result);
+    return pipeline;
+}
+
+VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout, const GraphicsPipelineDesc& desc) {
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    std::vector<VkShaderModule> modules;
+    auto addStage = [&](VkShaderStageFlagBits stage, const std::string& name) {
+        modules.push_back(loadShaderModule(context, name));
+        VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        info.stage = stage;
+        info.module = modules.back();
+        info.pName = "main";
+        stages.push_back(info);
+    };
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, desc.vertexShader);
+    if (!desc.fragmentShader.empty()) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, desc.fragmentShader);
+    const VkSpecializationMapEntry entry{0, 0, sizeof(uint32_t)};
+    const VkSpecializationInfo specialization{1, &entry, sizeof(uint32_t), &desc.specializationTextureCount};
+    if (desc.specializationTextureCount > 0 && stages.size() > 1) stages[1].pSpecializationInfo = &specialization;
+
+    // Vertices are pulled from storage buffers by gl_VertexIndex: no vertex input state.
+    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo inputAssembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = desc.cullMode;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.depthBiasEnable = desc.depthBias;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = desc.depthTest;
+    depth.depthWriteEnable = desc.depthTest;
+    depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
+    for (auto& blend : blends)
+        blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                               VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = uint32_t(blends.size());
+    blend.pAttachments = blends.data();
+    std::vector<VkDynamicState> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    if (desc.depthBias) dynamicStates.push_back(VK_DYNAMIC_STATE_DEPTH_BIAS);
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = uint32_t(dynamicStates.size());
+    dynamic.pDynamicStates = dynamicStates.data();
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = uint32_t(desc.colorFormats.size());
+    rendering.pColorAttachmentFormats = desc.colorFormats.data();
+    rendering.depthAttachmentFormat = desc.depthFormat;
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+    info.stageCount = uint32_t(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertexInput;
+    info.pInputAssemblyState = &inputAssembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult result = vkCreateGraphicsPipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    for (VkShaderModule module : modules) vkDestroyShaderModule(context.device, module, nullptr);
+    VK_CHECK(result);
+    return pipeline;
+}
+
+DescriptorPush& DescriptorPush::buffer(uint32_t binding, VkBuffer buffer, VkDescriptorType type) {
+    buffers_.at(bufferCount_) = {buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = type;
+    write.pBufferInfo = &buffers_[bufferCount_++];
+    writes_.push_back(write);
+    return *this;
+}
+
+DescriptorPush& DescriptorPush::storageImage(uint32_t binding, VkImageView view) {
+    images_.at(imageCount_) = {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    write.pImageInfo = &images_[imageCount_++];
+    writes_.push_back(write);
+    return *this;
+}
+
+DescriptorPush& DescriptorPush::sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
+                                             VkImageLayout layout) {
+    images_.at(imageCount_) = {sampler, view, layout};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &images_[imageCount_++];
+    writes_.push_back(write);
+    return *this;
+}
+
+void DescriptorPush::push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint,
+                          VkPipelineLayout layout, uint32_t set) {
+    context.cmdPushDescriptorSet(commands, bindPoint, layout, set, uint32_t(writes_.size()), writes_.data());
+}
+
+}  // namespace vct
+
+namespace vct {
+
+Pipeline::~Pipeline() {
+    if (!device_) return;
+    vkDestroyPipeline(device_, pipeline, nullptr);
+    vkDestroyPipelineLayout(device_, layout, nullptr);
+    vkDestroyDescriptorSetLayout(device_, setLayout, nullptr);
+}
+
+Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
+    std::swap(pipeline, other.pipeline);
+    std::swap(layout, other.layout);
+    std::swap(setLayout, other.setLayout);
+    std::swap(device_, other.device_);
+    return *this;
+}
+
+Sampler::Sampler(GpuContext& context, const VkSamplerCreateInfo& info) : device_(context.device) {
+    VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler));
+}
+
+Sampler::~Sampler() {
+    if (device_) vkDestroySampler(device_, sampler, nullptr);
+}
+
+Sampler& Sampler::operator=(Sampler&& other) noexcept {
+    std::swap(sampler, other.sampler);
+    std::swap(device_, other.device_);
+    return *this;
+}
+
+VkSamplerCreateInfo nearestClampSampler() {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = VK_FILTER_NEAREST;
+    info.minFilter = VK_FILTER_NEAREST;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.maxLod = VK_LOD_CLAMP_NONE;
+    return info;
+}
+
+VkSamplerCreateInfo linearClampSampler() {
+    VkSamplerCreateInfo info = nearestClampSampler();
+    info.magFilter = VK_FILTER_LINEAR;
+    info.minFilter = VK_FILTER_LINEAR;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    return info;
+}
+
+}  // namespace vct

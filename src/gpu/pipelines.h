@@ -1,0 +1,109 @@
+// Shader modules loaded from spirv/, pipelines, and push-descriptor set layouts.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpu/context.h"
+
+namespace vct {
+
+// The folder holding the compiled shaders: $VCT_SPIRV_DIR, else spirv/ beside the build folder
+// of the executable, else the source tree's spirv/.
+std::string spirvDirectory();
+
+// Loads spirv/NAME.spv (e.g. "gbuffer.frag"); a missing or malformed file is a vct::Error.
+VkShaderModule loadShaderModule(GpuContext& context, const std::string& name);
+
+struct Binding {
+    uint32_t binding;
+    VkDescriptorType type;
+    VkShaderStageFlags stages;
+    uint32_t count = 1;
+};
+
+// A descriptor set layout filled by vkCmdPushDescriptorSetKHR (no pools, no set lifetimes).
+VkDescriptorSetLayout createPushDescriptorLayout(GpuContext& context, const std::vector<Binding>& bindings);
+
+VkPipelineLayout createPipelineLayout(GpuContext& context, const std::vector<VkDescriptorSetLayout>& setLayouts,
+                                      uint32_t pushConstantBytes = 0);
+
+VkPipeline createComputePipeline(GpuContext& context, VkPipelineLayout layout, const std::string& shaderName);
+
+struct GraphicsPipelineDesc {
+    std::string vertexShader;
+    std::string fragmentShader;  // empty = depth only
+    std::vector<VkFormat> colorFormats;
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    bool depthTest = false;
+    bool depthBias = false;  // slope-scaled bias set dynamically (shadow maps)
+    VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    // Value of the fragment shader's specialization constant 0 (the G-buffer's texture count); 0 = none.
+    uint32_t specializationTextureCount = 0;
+};
+
+// A pipeline for dynamic rendering, with dynamic viewport and scissor.
+VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout, const GraphicsPipelineDesc& desc);
+
+// Collects descriptor writes for one vkCmdPushDescriptorSetKHR call.
+class DescriptorPush {
+public:
+    DescriptorPush& buffer(uint32_t binding, VkBuffer buffer, VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    DescriptorPush& storageImage(uint32_t binding, VkImageView view);
+    DescriptorPush& sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
+                                 VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    void push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint, VkPipelineLayout layout,
+              uint32_t set = 0);
+
+private:
+    // Stable addresses: the writes point into these until push().
+    std::vector<VkDescriptorBufferInfo> buffers_ = std::vector<VkDescriptorBufferInfo>(32);
+    std::vector<VkDescriptorImageInfo> images_ = std::vector<VkDescriptorImageInfo>(32);
+    std::vector<VkWriteDescriptorSet> writes_;
+    size_t bufferCount_ = 0, imageCount_ = 0;
+};
+
+}  // namespace vct
+
+namespace vct {
+
+// A pipeline with its layout and (push-descriptor) set layout, destroyed together.
+class Pipeline {
+public:
+    Pipeline() = default;
+    Pipeline(GpuContext& context, VkPipeline createdPipeline, VkPipelineLayout pipelineLayout,
+             VkDescriptorSetLayout descriptorSetLayout)
+        : pipeline(createdPipeline), layout(pipelineLayout), setLayout(descriptorSetLayout), device_(context.device) {}
+    ~Pipeline();
+    Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
+    Pipeline& operator=(Pipeline&& other) noexcept;
+
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+};
+
+// A sampler destroyed with its owner.
+class Sampler {
+public:
+    Sampler() = default;
+    Sampler(GpuContext& context, const VkSamplerCreateInfo& info);
+    ~Sampler();
+    Sampler(Sampler&& other) noexcept { *this = std::move(other); }
+    Sampler& operator=(Sampler&& other) noexcept;
+    VkSampler sampler = VK_NULL_HANDLE;
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+};
+
+VkSamplerCreateInfo nearestClampSampler();
+VkSamplerCreateInfo linearClampSampler();
+
+}  // namespace vct

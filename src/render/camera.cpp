@@ -1,0 +1,57 @@
+#include "render/camera.h"
+
+#include <algorithm>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace vct {
+
+glm::mat4 lookAlong(glm::vec3 eye, glm::vec3 forward, glm::vec3 up) {
+    forward = glm::normalize(forward);
+    if (std::abs(glm::dot(forward, glm::normalize(up))) > 0.999f)
+        up = std::abs(forward.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    return glm::lookAt(eye, eye + forward, up);
+}
+
+static float farthestCornerDistance(glm::vec3 from, const Bounds& bounds) {
+    float farthest = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 point((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                              (corner & 4) ? bounds.max.z : bounds.min.z);
+        farthest = std::max(farthest, glm::distance(from, point));
+    }
+    return farthest;
+}
+
+ViewProjection cameraMatrices(const Camera& camera, float aspect, const Bounds& sceneBounds) {
+    ViewProjection matrices;
+    matrices.view = lookAlong(camera.position, camera.forward, camera.up);
+    const float sceneSize = std::max(glm::length(sceneBounds.extent()), 1e-6f);
+    float zfar = camera.zfar > 0.0f ? camera.zfar : 1.01f * farthestCornerDistance(camera.position, sceneBounds);
+    // Depth precision only needs near/far ≲ 1e5 with a 32-bit float depth buffer.
+    float znear = camera.znear > 0.0f ? camera.znear : 1e-4f * sceneSize;
+    zfar = std::max(zfar, znear * 2.0f);
+    matrices.projection = glm::perspective(camera.yfov, aspect, znear, zfar);
+    matrices.projection[1][1] *= -1.0f;  // Vulkan's clip space has y pointing down
+    matrices.viewProjection = matrices.projection * matrices.view;
+    return matrices;
+}
+
+Camera defaultCamera(const Bounds& sceneBounds) {
+    Camera camera;
+    camera.name = "default camera";
+    const float radius = std::max(0.5f * glm::length(sceneBounds.extent()), 1e-3f);
+    camera.yfov = glm::radians(45.0f);
+    camera.znear = radius * 1e-3f;
+    aimCamera(camera, sceneBounds.center() + glm::vec3(0.0f, 0.3f, 1.0f) * (radius * 2.6f), sceneBounds.center());
+    return camera;
+}
+
+void aimCamera(Camera& camera, glm::vec3 position, glm::vec3 target) {
+    camera.position = position;
+    const glm::vec3 direction = target - position;
+    camera.forward = glm::length(direction) > 0.0f ? glm::normalize(direction) : glm::vec3(0, 0, -1);
+    camera.up = glm::vec3(0, 1, 0);
+}
+
+}  // namespace vct

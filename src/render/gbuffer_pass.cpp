@@ -1,0 +1,103 @@
+#include "render/gbuffer_pass.h"
+
+#include "gpu/commands.h"
+
+namespace vct {
+
+static GpuImage makeTarget(GpuContext& context, VkFormat format, uint32_t width, uint32_t height, const char* name) {
+    ImageDesc desc;
+    desc.format = format;
+    desc.extent = {width, height, 1};
+    desc.usage = (format == VK_FORMAT_D32_SFLOAT ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                                 : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
+                 VK_IMAGE_USAGE_SAMPLED_BIT;
+    desc.debugName = name;
+    return GpuImage(context, desc);
+}
+
+GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t targetWidth, uint32_t targetHeight)
+    : width(targetWidth), height(targetHeight), context_(context) {
+    position = makeTarget(context, VK_FORMAT_R32G32B32A32_SFLOAT, width, height, "G-buffer position");
+    normal = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer normal");
+    baseColor = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer base colour");
+    depth = makeTarget(context, VK_FORMAT_D32_SFLOAT, width, height, "G-buffer depth");
+
+    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
+        context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}});
+    VkPipelineLayout layout = createPipelineLayout(context, {setLayout, scene.textureSetLayout}, sizeof(uint32_t));
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = "gbuffer.vert";
+    desc.fragmentShader = "gbuffer.frag";
+    desc.colorFormats = {position.desc.format, normal.desc.format, baseColor.desc.format};
+    desc.depthFormat = VK_FORMAT_D32_SFLOAT;
+    desc.depthTest = true;
+    // The texture array's size is a specialization constant, so the pipeline is built per scene.
+    desc.specializationTextureCount = scene.textureCount();
+    pipeline = Pipeline(context, createGraphicsPipeline(context, layout, desc), layout, setLayout);
+}
+
+void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants) {
+    const VkPipelineStageFlags2 colorStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+    for (GpuImage* target : {&position, &normal, &baseColor})
+        imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_NONE, colorStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    imageBarrier(commands, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                 VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
+                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+
+    VkRenderingAttachmentInfo colors[3];
+    GpuImage* targets[3] = {&position, &normal, &baseColor};
+    for (int i = 0; i < 3; ++i) {
+        colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        colors[i].imageView = targets[i]->view;
+        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+    }
+    VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthAttachment.imageView = depth.view;
+    depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depthAttachment.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 3;
+    rendering.pColorAttachments = colors;
+    rendering.pDepthAttachment = &depthAttachment;
+    vkCmdBeginRendering(commands, &rendering);
+    if (scene.indexCount > 0) {
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+        DescriptorPush()
+            .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            .buffer(1, scene.vertices.buffer)
+            .buffer(2, scene.materials.buffer)
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout, 1, 1, &scene.textureSet, 0,
+                                nullptr);
+        const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+        const VkRect2D scissor{{0, 0}, {width, height}};
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &scissor);
+        vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+        for (const SceneGpu::MaterialRange& range : scene.materialRanges) {
+            vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(uint32_t), &range.material);
+            vkCmdDrawIndexed(commands, range.indexCount, 1, range.firstIndex, 0, 0);
+        }
+    }
+    vkCmdEndRendering(commands);
+
+    for (GpuImage* target : {&position, &normal, &baseColor})
+        imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, colorStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+}  // namespace vct

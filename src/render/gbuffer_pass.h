@@ -1,0 +1,27 @@
+// The G-buffer: what the camera sees at each sample, for the full-screen lighting pass.
+#pragma once
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+#include "render/scene_gpu.h"
+
+namespace vct {
+
+struct GBufferPass {
+    GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t width, uint32_t height);
+
+    // Leaves the targets in SHADER_READ_ONLY_OPTIMAL for the lighting pass.
+    void record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants);
+
+    uint32_t width, height;
+    GpuImage position;   // RGBA32F: world position, material index + 1 (0 = background)
+    GpuImage normal;     // RGBA16F: normal facing the camera, 1 on front faces
+    GpuImage baseColor;  // RGBA16F: linear base colour
+    GpuImage depth;      // D32F
+    Pipeline pipeline;
+
+private:
+    GpuContext& context_;
+};
+
+}  // namespace vct

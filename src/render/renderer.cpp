@@ -1,0 +1,157 @@
+#include "render/renderer.h"
+
+#include <chrono>
+#include <cstring>
+
+#include "gpu/commands.h"
+#include "gpu/vk_check.h"
+#include "render/camera.h"
+
+namespace vct {
+
+double FrameStats::gpuMilliseconds() const {
+    double total = 0.0;
+    for (const PassTime& pass : passes) total += pass.milliseconds;
+    return total;
+}
+
+bool FrameStats::ran(const std::string& pass) const {
+    for (const PassTime& time : passes)
+        if (time.name == pass) return true;
+    return false;
+}
+
+static uint32_t componentFlags(const RenderSettings& settings) {
+    const Components shown = effectiveComponents(settings);
+    uint32_t flags = 0;
+    if (shown.directDiffuse) flags |= glsl::SHOW_DIRECT_DIFFUSE;
+    if (shown.directSpecular) flags |= glsl::SHOW_DIRECT_SPECULAR;
+    if (shown.indirectDiffuse) flags |= glsl::SHOW_INDIRECT_DIFFUSE;
+    if (shown.indirectSpecular) flags |= glsl::SHOW_INDIRECT_SPECULAR;
+    if (shown.ambientOcclusion) flags |= glsl::SHOW_AMBIENT_OCCLUSION;
+    if (shown.emission) flags |= glsl::SHOW_EMISSION;
+    if (shown.shadows) flags |= glsl::USE_SHADOWS;
+    return flags;
+}
+
+// Host-visible buffers sized for `count` elements of T (at least one: Vulkan forbids empty buffers).
+template <typename T>
+static Buffer hostArray(GpuContext& context, size_t count, VkBufferUsageFlags usage) {
+    return Buffer(context, VkDeviceSize(std::max<size_t>(count, 1) * sizeof(T)), usage, true);
+}
+
+Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings& settings)
+    : context_(context),
+      settings_(settings),
+      sceneBounds_(scene.bounds()),
+      camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
+      lights_(scene.lights),
+      sceneGpu_(context, scene),
+      frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
+      gbufferPass_(context, sceneGpu_, settings.width * settings.supersample, settings.height * settings.supersample),
+      shadePass_(context, settings.width * settings.supersample, settings.height * settings.supersample),
+      resolvePass_(context, settings.width, settings.height, settings.supersample),
+      timer_(context) {
+    setLights(lights_);
+}
+
+void Renderer::setLights(const std::vector<Light>& lights) {
+    lights_ = lights;
+    const ShadowLayout previous = shadowLayout_;
+    shadowLayout_ = layoutShadows(lights_, sceneBounds_, settings_);
+    lightsBuffer_ = hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    shadowViewsBuffer_ =
+        hostArray<glsl::ShadowView>(context_, shadowLayout_.views.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::memcpy(lightsBuffer_.mapped, shadowLayout_.lights.data(), shadowLayout_.lights.size() * sizeof(glsl::GpuLight));
+    std::memcpy(shadowViewsBuffer_.mapped, shadowLayout_.views.data(),
+                shadowLayout_.views.size() * sizeof(glsl::ShadowView));
+    // New arrays only when the number of shadow maps changed; otherwise they are redrawn in place.
+    if (!shadowPass_ || previous.sunLayers != shadowLayout_.sunLayers ||
+        previous.localLayers != shadowLayout_.localLayers) {
+        if (shadowPass_) vkDeviceWaitIdle(context_.device);
+        shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_);
+    }
+    shadowsDirty_ = true;
+}
+
+void Renderer::setShadingSettings(const RenderSettings& settings) {
+    const bool shadowChange = settings.shadowSlopeBias != settings_.shadowSlopeBias;
+    settings_.mode = settings.mode;
+    settings_.components = settings.components;
+    settings_.ambientFactor = settings.ambientFactor;
+    settings_.shadowNormalOffset = settings.shadowNormalOffset;
+    settings_.pcfRadius = settings.pcfRadius;
+    settings_.shadowSlopeBias = settings.shadowSlopeBias;
+    if (shadowChange) shadowsDirty_ = true;
+}
+
+void Renderer::writeFrameConstants() {
+    const uint32_t width = gbufferPass_.width, height = gbufferPass_.height;
+    glsl::FrameConstants constants{};
+    constants.viewProjection = cameraMatrices(camera_, float(width) / float(height), sceneBounds_).viewProjection;
+    constants.cameraPosition = glm::vec4(camera_.position, 1.0f);
+    constants.counts = glm::uvec4(uint32_t(shadowLayout_.lights.size()), uint32_t(shadowLayout_.views.size()),
+                                  componentFlags(settings_), 0u);
+    constants.shading = glm::vec4(settings_.ambientFactor, settings_.shadowNormalOffset, settings_.pcfRadius, 0.0f);
+    constants.renderSize = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
+}
+
+FrameStats Renderer::renderFrame() {
+    const auto start = std::chrono::steady_clock::now();
+    FrameStats stats;
+    writeFrameConstants();
+    const bool drawShadows = shadowsDirty_;
+    submitAndWait(context_, [&](VkCommandBuffer commands) {
+        timer_.reset(commands);
+        if (drawShadows) {
+            timer_.begin(commands, "shadow");
+            shadowPass_->record(commands, sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_);
+            timer_.end(commands);
+        }
+        timer_.begin(commands, "gbuffer");
+        gbufferPass_.record(commands, sceneGpu_, frameConstants_.buffer);
+        timer_.end(commands);
+        timer_.begin(commands, "shade");
+        const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_.materials.buffer, lightsBuffer_.buffer,
+                                 shadowViewsBuffer_.buffer};
+        shadePass_.record(commands, inputs, gbufferPass_, *shadowPass_);
+        timer_.end(commands);
+        timer_.begin(commands, "resolve");
+        resolvePass_.record(commands, shadePass_.radiance);
+        timer_.end(commands);
+    });
+    shadowsDirty_ = false;
+    if (!drawShadows) stats.skipped.push_back("shadow");
+    stats.passes = timer_.results();
+    stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+Image Renderer::readImage() {
+    const uint32_t width = resolvePass_.width, height = resolvePass_.height;
+    Buffer readback(context_, VkDeviceSize(width) * height * 4 * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    submitAndWait(context_, [&](VkCommandBuffer commands) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {width, height, 1};
+        const VkImage resolved = resolvePass_.resolved.image;
+        imageBarrier(commands, resolved, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                     VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        vkCmdCopyImageToBuffer(commands, resolved, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+        imageBarrier(commands, resolved, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+    });
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgb.resize(size_t(width) * height * 3);
+    const float* rgba = static_cast<const float*>(readback.mapped);
+    for (size_t i = 0; i < size_t(width) * height; ++i)
+        for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = rgba[i * 4 + c];
+    return image;
+}
+
+}  // namespace vct

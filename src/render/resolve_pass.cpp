@@ -1,0 +1,41 @@
+#include "render/resolve_pass.h"
+
+#include "gpu/commands.h"
+
+namespace vct {
+
+ResolvePass::ResolvePass(GpuContext& context, uint32_t targetWidth, uint32_t targetHeight, uint32_t factor)
+    : width(targetWidth), height(targetHeight), supersample(factor), context_(context) {
+    ImageDesc desc;
+    desc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    desc.extent = {width, height, 1};
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    desc.debugName = "resolved radiance";
+    resolved = GpuImage(context, desc);
+    pointSampler = Sampler(context, nearestClampSampler());
+    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
+        context, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+                  {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
+    VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
+    pipeline = Pipeline(context, createComputePipeline(context, layout, "resolve.comp"), layout, setLayout);
+}
+
+void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled) {
+    imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+    DescriptorPush()
+        .sampledImage(0, supersampled.view, pointSampler.sampler)
+        .storageImage(1, resolved.view)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+    vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(supersample), &supersample);
+    vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
+    imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
+                 VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+}  // namespace vct

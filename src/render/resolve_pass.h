@@ -1,0 +1,24 @@
+// Averages each pixel's supersample² samples (a box filter over the pixel's square).
+#pragma once
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+
+namespace vct {
+
+struct ResolvePass {
+    ResolvePass(GpuContext& context, uint32_t width, uint32_t height, uint32_t supersample);
+
+    // Reads `supersampled` (SHADER_READ_ONLY_OPTIMAL); leaves `resolved` in GENERAL.
+    void record(VkCommandBuffer commands, const GpuImage& supersampled);
+
+    uint32_t width, height, supersample;
+    GpuImage resolved;  // RGBA32F, width × height
+    Sampler pointSampler;
+    Pipeline pipeline;
+
+private:
+    GpuContext& context_;
+};
+
+}  // namespace vct

@@ -1,0 +1,135 @@
+#include "render/scene_gpu.h"
+
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+
+#include "gpu/commands.h"
+#include "gpu/vk_check.h"
+#include "gpu_types.h"
+
+namespace vct {
+namespace {
+
+static_assert(sizeof(Vertex) == sizeof(glsl::GpuVertex), "Vertex must match GpuVertex");
+
+// Storage buffers are never empty (Vulkan forbids it) and hold at least one element.
+template <typename T>
+Buffer uploadArray(GpuContext& context, const std::vector<T>& values, VkBufferUsageFlags usage) {
+    std::vector<T> padded = values;
+    if (padded.empty()) padded.resize(1);
+    return uploadBuffer(context, padded.data(), padded.size() * sizeof(T), usage);
+}
+
+GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, const uint8_t* rgba8) {
+    ImageDesc desc;
+    desc.format = VK_FORMAT_R8G8B8A8_SRGB;  // glTF base colour textures are sRGB-encoded
+    desc.extent = {width, height, 1};
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    desc.debugName = "base colour texture";
+    GpuImage image(context, desc);
+    const VkDeviceSize size = VkDeviceSize(width) * height * 4;
+    Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    std::memcpy(staging.mapped, rgba8, size);
+    submitAndWait(context, [&](VkCommandBuffer commands) {
+        imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {width, height, 1};
+        vkCmdCopyBufferToImage(commands, staging.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    });
+    return image;
+}
+
+}  // namespace
+
+SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) {
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    vertices = uploadArray(context, scene.vertices, storage);
+    triangleCount = uint32_t(scene.triangleCount());
+    indexCount = triangleCount * 3;
+
+    // A stable sort by material keeps each material's triangles in file order.
+    std::vector<uint32_t> order(triangleCount);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return scene.triangleMaterials[a] < scene.triangleMaterials[b];
+    });
+    std::vector<uint32_t> sortedIndices(indexCount);
+    std::vector<uint32_t> sortedMaterials(triangleCount);
+    for (uint32_t i = 0; i < triangleCount; ++i) {
+        const uint32_t triangle = order[i];
+        sortedMaterials[i] = scene.triangleMaterials[triangle];
+        for (uint32_t corner = 0; corner < 3; ++corner)
+            sortedIndices[i * 3 + corner] = scene.indices[triangle * 3 + corner];
+        if (materialRanges.empty() || materialRanges.back().material != sortedMaterials[i])
+            materialRanges.push_back({sortedMaterials[i], i * 3, 0});
+        materialRanges.back().indexCount += 3;
+    }
+    indices = uploadArray(context, sortedIndices, storage | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    triangleMaterials = uploadArray(context, sortedMaterials, storage);
+
+    std::vector<glsl::GpuMaterial> gpuMaterials;
+    for (const Material& material : scene.materials) {
+        glsl::GpuMaterial gpu{};
+        gpu.baseColorFactor = material.baseColorFactor;
+        gpu.emission = glm::vec4(material.emission, 0.0f);
+        gpu.metallic = material.metallic;
+        gpu.roughness = material.roughness;
+        gpu.specularWeight = material.specularWeight;
+        gpu.baseColorTexture = material.baseColorTexture;
+        gpuMaterials.push_back(gpu);
+    }
+    materials = uploadArray(context, gpuMaterials, storage);
+
+    for (const Texture& texture : scene.textures)
+        textures.push_back(uploadTexture(context, texture.width, texture.height, texture.rgba8.data()));
+    if (textures.empty()) {
+        const uint8_t white[4] = {255, 255, 255, 255};
+        textures.push_back(uploadTexture(context, 1, 1, white));
+    }
+    VkSamplerCreateInfo samplerInfo = linearClampSampler();
+    samplerInfo.addressModeU = samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;  // glTF's default wrap
+    textureSampler = Sampler(context, samplerInfo);
+
+    // The texture array changes size with the scene, so it lives in a classic descriptor set.
+    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount(),
+                                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    layoutInfo.bindingCount = 1;
+    layoutInfo.pBindings = &binding;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &layoutInfo, nullptr, &textureSetLayout));
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount()};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &poolSize;
+    VK_CHECK(vkCreateDescriptorPool(context.device, &poolInfo, nullptr, &texturePool));
+    VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocateInfo.descriptorPool = texturePool;
+    allocateInfo.descriptorSetCount = 1;
+    allocateInfo.pSetLayouts = &textureSetLayout;
+    VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, &textureSet));
+    std::vector<VkDescriptorImageInfo> imageInfos;
+    for (const GpuImage& texture : textures)
+        imageInfos.push_back({textureSampler.sampler, texture.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = textureSet;
+    write.descriptorCount = textureCount();
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = imageInfos.data();
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+}
+
+SceneGpu::~SceneGpu() {
+    vkDestroyDescriptorPool(context_.device, texturePool, nullptr);
+    vkDestroyDescriptorSetLayout(context_.device, textureSetLayout, nullptr);
+}
+
+}  // namespace vct

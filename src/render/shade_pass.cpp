@@ -1,0 +1,77 @@
+#include "render/shade_pass.h"
+
+#include "gpu/commands.h"
+
+namespace vct {
+
+ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetHeight)
+    : width(targetWidth), height(targetHeight), context_(context) {
+    ImageDesc desc;
+    desc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    desc.extent = {width, height, 1};
+    desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    desc.debugName = "radiance";
+    radiance = GpuImage(context, desc);
+    pointSampler = Sampler(context, nearestClampSampler());
+
+    const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
+        context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment},
+                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+                  {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+                  {4, sampled, fragment},
+                  {5, sampled, fragment},
+                  {6, sampled, fragment},
+                  {7, sampled, fragment},
+                  {8, sampled, fragment}});
+    VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
+    GraphicsPipelineDesc pipelineDesc;
+    pipelineDesc.vertexShader = "fullscreen.vert";
+    pipelineDesc.fragmentShader = "shade.frag";
+    pipelineDesc.colorFormats = {desc.format};
+    pipeline = Pipeline(context, createGraphicsPipeline(context, layout, pipelineDesc), layout, setLayout);
+}
+
+void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
+                       const ShadowPass& shadows) {
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
+                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = radiance.view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every pixel is written
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    vkCmdBeginRendering(commands, &rendering);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+    DescriptorPush()
+        .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .buffer(1, inputs.materials)
+        .buffer(2, inputs.lights)
+        .buffer(3, inputs.shadowViews)
+        .sampledImage(4, shadows.sunMaps.view, shadows.compareSampler.sampler)
+        .sampledImage(5, shadows.localMaps.view, shadows.compareSampler.sampler)
+        .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
+        .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
+        .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(commands, 0, 1, &viewport);
+    vkCmdSetScissor(commands, 0, 1, &scissor);
+    vkCmdDraw(commands, 3, 1, 0, 0);
+    vkCmdEndRendering(commands);
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+}  // namespace vct

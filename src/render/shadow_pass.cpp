@@ -1,0 +1,167 @@
+#include "render/shadow_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gpu/commands.h"
+#include "render/camera.h"
+
+namespace vct {
+namespace {
+
+constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
+
+glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, float znear, float zfar, uint32_t layer,
+                                 uint32_t size) {
+    glsl::ShadowView view{};
+    view.viewProjection = glm::perspective(fov, 1.0f, znear, zfar) * lookAlong(eye, forward, glm::vec3(0, 1, 0));
+    // World size of one texel at distance 1 from the light.
+    view.params = glm::vec4(1.0f, float(layer), 2.0f * std::tan(0.5f * fov) / float(size), 1.0f);
+    return view;
+}
+
+}  // namespace
+
+ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& sceneBounds, const RenderSettings& settings) {
+    ShadowLayout layout;
+    const glm::vec3 center = sceneBounds.center();
+    const float radius = std::max(0.5f * glm::length(sceneBounds.extent()), 1e-6f);
+    for (const Light& light : lights) {
+        glsl::GpuLight gpu{};
+        gpu.radiantIntensity = glm::vec4(light.color * light.intensity, float(uint32_t(light.type)));
+        gpu.positionRange = glm::vec4(light.position, light.range);
+        gpu.direction = glm::vec4(glm::normalize(light.direction), 0.0f);
+        gpu.spotShadow = glm::vec4(light.innerConeAngle, light.outerConeAngle, float(layout.views.size()), 0.0f);
+
+        if (light.type == LightType::Directional) {
+            // An orthographic box around the scene's bounding sphere, looking along the light.
+            const glm::vec3 eye = center - glm::normalize(light.direction) * (2.0f * radius);
+            glsl::ShadowView view{};
+            view.viewProjection = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) *
+                                  lookAlong(eye, light.direction, glm::vec3(0, 1, 0));
+            view.params = glm::vec4(0.0f, float(layout.sunLayers++), 2.0f * radius / float(settings.sunShadowMapSize),
+                                    0.0f);
+            layout.views.push_back(view);
+            gpu.spotShadow.w = 1.0f;
+        } else {
+            float farthest = 0.0f;
+            for (int corner = 0; corner < 8; ++corner) {
+                const glm::vec3 point((corner & 1) ? sceneBounds.max.x : sceneBounds.min.x,
+                                      (corner & 2) ? sceneBounds.max.y : sceneBounds.min.y,
+                                      (corner & 4) ? sceneBounds.max.z : sceneBounds.min.z);
+                farthest = std::max(farthest, glm::distance(light.position, point));
+            }
+            const float zfar = std::max(farthest * 1.01f, 1e-5f);
+            const float znear = std::max(zfar * 1e-4f, 1e-7f);
+            if (light.type == LightType::Spot) {
+                const float fov = std::min(2.0f * light.outerConeAngle * 1.05f + 0.02f, glm::radians(170.0f));
+                layout.views.push_back(perspectiveView(light.position, light.direction, fov, znear, zfar,
+                                                       layout.localLayers++, settings.localShadowMapSize));
+                gpu.spotShadow.w = 1.0f;
+            } else {
+                // Faces a little wider than 90° so the PCF kernel near a face edge stays inside the face.
+                const float margin = 1.0f + 2.0f * (settings.pcfRadius + 1.0f) / float(settings.localShadowMapSize);
+                const float fov = 2.0f * std::atan(margin);
+                const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+                for (const glm::vec3& axis : axes)
+                    layout.views.push_back(perspectiveView(light.position, axis, fov, znear, zfar,
+                                                           layout.localLayers++, settings.localShadowMapSize));
+                gpu.spotShadow.w = 6.0f;
+            }
+        }
+        layout.lights.push_back(gpu);
+    }
+    return layout;
+}
+
+ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings)
+    : context_(context) {
+    auto makeArray = [&](uint32_t layers, uint32_t size, const char* name) {
+        ImageDesc desc;
+        desc.format = kShadowFormat;
+        desc.extent = layers > 0 ? VkExtent3D{size, size, 1} : VkExtent3D{1, 1, 1};
+        desc.layers = std::max(layers, 1u);
+        desc.arrayView = true;
+        desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+        desc.debugName = name;
+        return GpuImage(context, desc);
+    };
+    sunMaps = makeArray(layout.sunLayers, settings.sunShadowMapSize, "sun shadow maps");
+    localMaps = makeArray(layout.localLayers, settings.localShadowMapSize, "local shadow maps");
+
+    VkSamplerCreateInfo samplerInfo = linearClampSampler();
+    samplerInfo.compareEnable = VK_TRUE;
+    samplerInfo.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // 1 = the surface is not behind the stored depth
+    compareSampler = Sampler(context, samplerInfo);
+
+    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
+        context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});
+    VkPipelineLayout pipelineLayout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = "shadow.vert";
+    desc.depthFormat = kShadowFormat;
+    desc.depthTest = true;
+    desc.depthBias = true;
+    pipeline = Pipeline(context, createGraphicsPipeline(context, pipelineLayout, desc), pipelineLayout, setLayout);
+}
+
+void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout,
+                        VkBuffer viewsBuffer, const RenderSettings& settings) {
+    const VkImageLayout previous = initialized ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+    for (GpuImage* maps : {&sunMaps, &localMaps})
+        imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, previous,
+                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
+                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+    DescriptorPush().buffer(0, scene.vertices.buffer).buffer(1, viewsBuffer)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+    vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdSetDepthBias(commands, 0.0f, 0.0f, settings.shadowSlopeBias);
+
+    // Unused arrays (no light of that kind) are cleared once so they sample as "lit".
+    auto renderLayer = [&](GpuImage& maps, uint32_t layer, int viewIndex) {
+        const uint32_t size = maps.desc.extent.width;
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = maps.layerViews[layer];
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depth.clearValue.depthStencil = {1.0f, 0};
+        VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        rendering.renderArea = {{0, 0}, {size, size}};
+        rendering.layerCount = 1;
+        rendering.pDepthAttachment = &depth;
+        vkCmdBeginRendering(commands, &rendering);
+        if (viewIndex >= 0 && scene.indexCount > 0) {
+            const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+            const VkRect2D scissor{{0, 0}, {size, size}};
+            vkCmdSetViewport(commands, 0, 1, &viewport);
+            vkCmdSetScissor(commands, 0, 1, &scissor);
+            const uint32_t index = uint32_t(viewIndex);
+            vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(index), &index);
+            vkCmdDrawIndexed(commands, scene.indexCount, 1, 0, 0, 0);
+        }
+        vkCmdEndRendering(commands);
+    };
+    for (size_t i = 0; i < layout.views.size(); ++i) {
+        const glsl::ShadowView& view = layout.views[i];
+        renderLayer(view.params.x < 0.5f ? sunMaps : localMaps, uint32_t(view.params.y), int(i));
+    }
+    if (layout.sunLayers == 0) renderLayer(sunMaps, 0, -1);
+    if (layout.localLayers == 0) renderLayer(localMaps, 0, -1);
+
+    for (GpuImage* maps : {&sunMaps, &localMaps})
+        imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    initialized = true;
+}
+
+}  // namespace vct

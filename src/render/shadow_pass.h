@@ -1,0 +1,44 @@
+// Shadow maps for every light: a sun gets an orthographic map fitted to the scene, a spot a
+// perspective map over its cone, a point light six perspective maps (cube faces).
+#pragma once
+
+#include <vector>
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+#include "gpu_types.h"
+#include "render/scene_gpu.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+
+namespace vct {
+
+// The shadow views of all lights, and the lights in GPU form pointing at their views.
+struct ShadowLayout {
+    std::vector<glsl::ShadowView> views;
+    std::vector<glsl::GpuLight> lights;
+    uint32_t sunLayers = 0;
+    uint32_t localLayers = 0;
+};
+
+ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& sceneBounds, const RenderSettings& settings);
+
+struct ShadowPass {
+    ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings);
+
+    // Renders every view into its layer and leaves both arrays ready for sampling.
+    void record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout, VkBuffer viewsBuffer,
+                const RenderSettings& settings);
+
+    // Both arrays exist even when unused (1×1) so the shading pass can always bind them.
+    GpuImage sunMaps;
+    GpuImage localMaps;
+    Sampler compareSampler;
+    Pipeline pipeline;
+    bool initialized = false;  // layouts are valid for sampling
+
+private:
+    GpuContext& context_;
+};
+
+}  // namespace vct
