@@ -1,0 +1,541 @@
+// The reference path tracer against answers known in closed form, and against itself.
+// Scenes are built here, so the tests need no file and no loader.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "bsdf.h"
+#include "bvh.h"
+#include "lights.h"
+#include "path_tracer.h"
+#include "sampling.h"
+
+namespace vct::pt {
+namespace {
+
+// Tolerances, in one place.
+constexpr double kFurnaceMeanTolerance = 0.01;   // relative, image mean
+constexpr double kFurnacePixelNoise = 0.08;      // relative standard error of any pixel
+constexpr double kAnalyticPixelTolerance = 0.01; // relative, point light over a plane
+constexpr double kSigmas = 4.5;                  // agreement of independent estimates, in standard errors
+constexpr double kPdfIntegralTolerance = 0.005;  // absolute
+constexpr double kSamplerTolerance = 0.03;
+
+Material lambertian(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
+    Material material;
+    material.baseColorFactor = glm::vec4(albedo, 1.0f);
+    material.metallic = 0.0f;
+    material.roughness = 1.0f;
+    material.specularWeight = 0.0f;
+    material.emission = emission;
+    return material;
+}
+
+uint32_t addMaterial(Scene& scene, const Material& material) {
+    scene.materials.push_back(material);
+    return uint32_t(scene.materials.size() - 1);
+}
+
+void addTriangle(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material) {
+    const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+    const uint32_t first = uint32_t(scene.vertices.size());
+    for (const glm::vec3& p : {a, b, c}) scene.vertices.push_back({p, 0.0f, normal, 0.0f});
+    for (uint32_t i = 0; i < 3; ++i) scene.indices.push_back(first + i);
+    scene.triangleMaterials.push_back(material);
+}
+
+// A planar quad, corners in order around it, wound so that its normal points towards `facing`.
+void addQuad(Scene& scene, std::array<glm::vec3, 4> corners, glm::vec3 facing, uint32_t material) {
+    const glm::vec3 center = 0.25f * (corners[0] + corners[1] + corners[2] + corners[3]);
+    if (glm::dot(glm::cross(corners[1] - corners[0], corners[2] - corners[0]), facing - center) < 0.0f) {
+        std::reverse(corners.begin(), corners.end());
+    }
+    addTriangle(scene, corners[0], corners[1], corners[2], material);
+    addTriangle(scene, corners[0], corners[2], corners[3], material);
+}
+
+// The six faces of the cube [−h, h]³, facing inwards; `faceMaterials` in the order −x +x −y +y −z +z.
+void addInwardBox(Scene& scene, float h, const std::array<uint32_t, 6>& faceMaterials) {
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            std::array<glm::vec3, 4> corners;
+            const float su[4] = {-h, h, h, -h}, sv[4] = {-h, -h, h, h};
+            for (int i = 0; i < 4; ++i) {
+                corners[i][axis] = side == 0 ? -h : h;
+                corners[i][u] = su[i];
+                corners[i][v] = sv[i];
+            }
+            addQuad(scene, corners, glm::vec3(0.0f), faceMaterials[2 * axis + side]);
+        }
+    }
+}
+
+// A UV sphere with smooth (vertex) normals pointing outwards.
+void addSphere(Scene& scene, glm::vec3 center, float radius, uint32_t material, int rings, int segments) {
+    auto point = [&](int ring, int segment) {
+        const float theta = kPi * float(ring) / float(rings), phi = 2.0f * kPi * float(segment) / float(segments);
+        return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+    };
+    for (int ring = 0; ring < rings; ++ring) {
+        for (int segment = 0; segment < segments; ++segment) {
+            const glm::vec3 n[4] = {point(ring, segment), point(ring + 1, segment), point(ring + 1, segment + 1),
+                                    point(ring, segment + 1)};
+            for (const auto& tri : {std::array<int, 3>{0, 2, 1}, std::array<int, 3>{0, 3, 2}}) {
+                const uint32_t first = uint32_t(scene.vertices.size());
+                for (int k : tri) scene.vertices.push_back({center + radius * n[k], 0.0f, n[k], 0.0f});
+                for (uint32_t i = 0; i < 3; ++i) scene.indices.push_back(first + i);
+                scene.triangleMaterials.push_back(material);
+            }
+        }
+    }
+}
+
+// A closed room with coloured walls, a rough metal floor, a glossy dielectric block, a point
+// light and an emissive ceiling patch: every kind of light path the tracer knows.
+Scene makeTestRoom() {
+    Scene scene;
+    scene.name = "test room";
+    const uint32_t white = addMaterial(scene, lambertian(glm::vec3(0.7f)));
+    const uint32_t red = addMaterial(scene, lambertian(glm::vec3(0.7f, 0.1f, 0.1f)));
+    Material metal;
+    metal.baseColorFactor = glm::vec4(0.9f, 0.8f, 0.6f, 1.0f);
+    metal.metallic = 1.0f;
+    metal.roughness = 0.4f;
+    const uint32_t floor = addMaterial(scene, metal);
+    Material plastic;
+    plastic.baseColorFactor = glm::vec4(0.2f, 0.3f, 0.8f, 1.0f);
+    plastic.metallic = 0.0f;
+    plastic.roughness = 0.3f;
+    const uint32_t block = addMaterial(scene, plastic);
+    const uint32_t lamp = addMaterial(scene, lambertian(glm::vec3(0.5f), glm::vec3(20.0f)));
+    addInwardBox(scene, 1.0f, {red, white, floor, white, white, white});
+    addQuad(scene, {glm::vec3(-0.3f, -1.0f, -0.3f), glm::vec3(0.2f, -1.0f, -0.3f), glm::vec3(0.2f, -0.4f, -0.3f),
+                    glm::vec3(-0.3f, -0.4f, -0.3f)},
+            glm::vec3(0.0f, 0.0f, 1.0f), block);
+    addQuad(scene, {glm::vec3(-0.2f, 0.99f, -0.2f), glm::vec3(0.2f, 0.99f, -0.2f), glm::vec3(0.2f, 0.99f, 0.2f),
+                    glm::vec3(-0.2f, 0.99f, 0.2f)},
+            glm::vec3(0.0f), lamp);
+    Light light;
+    light.position = glm::vec3(0.5f, 0.5f, 0.3f);
+    light.intensity = 1.5f;
+    scene.lights.push_back(light);
+    scene.cameras.push_back(cameraLookingAt(glm::vec3(0.0f, 0.0f, 0.95f), glm::vec3(0.0f, -0.2f, 0.0f), 1.4f));
+    return scene;
+}
+
+RenderSettings smallRender(const Scene& scene, uint32_t size, uint32_t spp, Component component, uint64_t seed) {
+    RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.samplesPerPixel = spp;
+    settings.component = component;
+    settings.seed = seed;
+    settings.threads = 2;
+    settings.camera = scene.cameras.at(0);
+    return settings;
+}
+
+bool allFinite(const Image& image) {
+    return std::all_of(image.rgb.begin(), image.rgb.end(), [](float x) { return std::isfinite(x); });
+}
+
+struct Estimate {
+    double mean = 0.0, standardError = 0.0;
+};
+// Mean luminance and its standard error over the pixels [x0, x1) × [y0, y1).
+Estimate regionLuminance(const RenderResult& r, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1) {
+    double sum = 0.0, variance = 0.0;
+    for (uint32_t y = y0; y < y1; ++y) {
+        for (uint32_t x = x0; x < x1; ++x) {
+            const float* p = r.image.pixel(x, y);
+            sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            variance += r.luminanceVariance[size_t(y) * r.image.width + x];
+        }
+    }
+    const double count = double(x1 - x0) * double(y1 - y0);
+    return {sum / count, std::sqrt(variance) / count};
+}
+
+TEST(PathTracer, WhiteFurnaceClosedBoxGivesEmissionOverOneMinusAlbedo) {
+    // Inside a closed box whose walls all emit E and reflect a fraction a diffusely, radiance is
+    // E + a·E + a²·E + … = E / (1 − a) in every direction.
+    const float emission = 0.5f, albedo = 0.8f;
+    Scene scene;
+    const uint32_t wall = addMaterial(scene, lambertian(glm::vec3(albedo), glm::vec3(emission)));
+    addInwardBox(scene, 1.0f, {wall, wall, wall, wall, wall, wall});
+    scene.cameras.push_back(cameraLookingAt(glm::vec3(0.1f, 0.2f, 0.3f), glm::vec3(1.0f, 0.6f, -1.0f), 1.5f));
+    const PathTracer tracer = createPathTracer(scene);
+    const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 7));
+
+    const double expected = emission / (1.0 - albedo);
+    ASSERT_TRUE(allFinite(result.image));
+    EXPECT_EQ(result.discardedSamples, 0u);
+    EXPECT_NEAR(result.meanLuminance, expected, kFurnaceMeanTolerance * expected);
+    for (size_t i = 0; i < result.luminanceVariance.size(); ++i) {
+        const double sigma = std::sqrt(double(result.luminanceVariance[i]));
+        EXPECT_LT(sigma, kFurnacePixelNoise * expected);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(result.image.rgb[3 * i + c], expected, kSigmas * sigma);
+    }
+}
+
+// The irradiance KHR_lights_punctual prescribes at p on the plane y = 0 (normal +Y), no photometric factor.
+glm::dvec3 planeIrradiance(const Light& light, const glm::vec3& p) {
+    if (light.type == LightType::Directional) {
+        return glm::dvec3(light.color * light.intensity * std::max(0.0f, -glm::normalize(light.direction).y));
+    }
+    const glm::vec3 toLight = light.position - p;
+    const float d2 = glm::dot(toLight, toLight);
+    const glm::vec3 L = toLight / std::sqrt(d2);
+    float falloff = glsl::rangeAttenuation(std::sqrt(d2), light.range);
+    if (light.type == LightType::Spot) {
+        falloff *= glsl::spotAttenuation(glm::normalize(light.direction), -L, light.innerConeAngle,
+                                         light.outerConeAngle);
+    }
+    return glm::dvec3(light.color * light.intensity * falloff * std::max(0.0f, L.y) / d2);
+}
+
+TEST(PathTracer, PunctualLightsOverLambertianPlaneFollowTheirFalloff) {
+    // L = albedo/π · E with E = c·I·cosθ/d² for a point light (× the cone falloff for a spot,
+    // × the range falloff when a range is set) and E = c·E·cosθ for a directional one. A lone plane
+    // has no indirect light, so `full` must match. Each pixel's expectation is the formula averaged
+    // over the pixel's square, computed here on a fine grid of sub-pixel positions.
+    const glm::vec3 albedo(0.5f, 0.6f, 0.7f);
+    Light point;
+    point.position = glm::vec3(0.3f, 1.0f, -0.2f);
+    point.color = glm::vec3(1.0f, 0.5f, 0.25f);
+    point.intensity = 2.0f;
+    Light ranged = point;
+    ranged.range = 3.0f;
+    Light spot = point;
+    spot.type = LightType::Spot;
+    spot.direction = glm::normalize(glm::vec3(-0.2f, -1.0f, 0.1f));
+    spot.innerConeAngle = 0.3f;
+    spot.outerConeAngle = 1.2f;
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.5f));
+    sun.intensity = 3.0f;
+    for (const Light& light : {point, ranged, spot, sun}) {
+        Scene scene;
+        const uint32_t plane = addMaterial(scene, lambertian(albedo));
+        addQuad(scene, {glm::vec3(-10, 0, -10), glm::vec3(10, 0, -10), glm::vec3(10, 0, 10), glm::vec3(-10, 0, 10)},
+                glm::vec3(0, 1, 0), plane);
+        scene.lights.push_back(light);
+        scene.cameras.push_back(cameraLookingAt(glm::vec3(0, 2.5f, 2.5f), glm::vec3(0, 0, 0), 1.0f));
+        const PathTracer tracer = createPathTracer(scene);
+        const RenderSettings settings = smallRender(scene, 32, 1024, Component::Full, 3);
+        const RenderResult result = render(tracer, settings);
+
+        auto analytic = [&](float x, float y) {
+            const Ray ray = cameraRay(settings.camera, settings.width, settings.height, x, y);
+            const glm::vec3 p = ray.origin + (-ray.origin.y / ray.direction.y) * ray.direction;
+            return glm::dvec3(albedo / kPi) * planeIrradiance(light, p);
+        };
+        constexpr int kSubpixels = 16;
+        for (auto [px, py] : {std::pair{16u, 16u}, {4u, 4u}, {28u, 8u}, {10u, 27u}, {22u, 20u}}) {
+            glm::dvec3 expected(0.0);
+            for (int i = 0; i < kSubpixels; ++i) {
+                for (int j = 0; j < kSubpixels; ++j) {
+                    expected += analytic(float(px) + (float(i) + 0.5f) / kSubpixels,
+                                         float(py) + (float(j) + 0.5f) / kSubpixels);
+                }
+            }
+            expected /= double(kSubpixels * kSubpixels);
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_NEAR(result.image.pixel(px, py)[c], expected[c], kAnalyticPixelTolerance * expected[c])
+                    << "light type " << int(light.type) << " pixel (" << px << ", " << py << ") channel " << c;
+            }
+        }
+    }
+}
+
+TEST(PathTracer, RendersWithDifferentSeedsAgreeWithinTheirEstimatedNoise) {
+    const Scene scene = makeTestRoom();
+    const PathTracer tracer = createPathTracer(scene);
+    const RenderResult a = render(tracer, smallRender(scene, 24, 32, Component::Full, 1));
+    const RenderResult b = render(tracer, smallRender(scene, 24, 32, Component::Full, 2));
+    ASSERT_TRUE(allFinite(a.image) && allFinite(b.image));
+    EXPECT_NE(a.image.rgb, b.image.rgb);
+    EXPECT_NEAR(a.meanLuminance, b.meanLuminance,
+                kSigmas * std::hypot(a.meanLuminanceStandardError, b.meanLuminanceStandardError));
+    // Per pixel, (a − b)² / (σa² + σb²) averages 1 when both noise estimates are right.
+    double normalizedSquares = 0.0;
+    for (uint32_t y = 0; y < a.image.height; ++y) {
+        for (uint32_t x = 0; x < a.image.width; ++x) {
+            const double da = regionLuminance(a, x, y, x + 1, y + 1).mean;
+            const double db = regionLuminance(b, x, y, x + 1, y + 1).mean;
+            const size_t i = size_t(y) * a.image.width + x;
+            const double variance = double(a.luminanceVariance[i]) + double(b.luminanceVariance[i]);
+            normalizedSquares += variance > 0.0 ? (da - db) * (da - db) / variance : 1.0;
+        }
+    }
+    const double meanNormalizedSquare = normalizedSquares / double(a.luminanceVariance.size());
+    EXPECT_GT(meanNormalizedSquare, 0.6);
+    EXPECT_LT(meanNormalizedSquare, 1.6);
+}
+
+TEST(PathTracer, SameSeedGivesTheSameImageWithAnyThreadCount) {
+    const Scene scene = makeTestRoom();
+    const PathTracer tracer = createPathTracer(scene);
+    RenderSettings settings = smallRender(scene, 12, 4, Component::Full, 5);
+    settings.threads = 1;
+    const RenderResult one = render(tracer, settings);
+    settings.threads = 3;
+    const RenderResult three = render(tracer, settings);
+    EXPECT_EQ(one.image.rgb, three.image.rgb);
+}
+
+TEST(PathTracer, DirectPlusIndirectEqualsFull) {
+    const Scene scene = makeTestRoom();
+    const PathTracer tracer = createPathTracer(scene);
+    constexpr uint32_t kSize = 24;
+    const RenderResult full = render(tracer, smallRender(scene, kSize, 32, Component::Full, 11));
+    const RenderResult direct = render(tracer, smallRender(scene, kSize, 32, Component::Direct, 12));
+    const RenderResult indirect = render(tracer, smallRender(scene, kSize, 32, Component::Indirect, 13));
+    ASSERT_TRUE(allFinite(full.image) && allFinite(direct.image) && allFinite(indirect.image));
+    EXPECT_GT(direct.meanLuminance, 0.1 * full.meanLuminance);
+    EXPECT_GT(indirect.meanLuminance, 0.1 * full.meanLuminance);
+    // The whole image and each quadrant.
+    const uint32_t h = kSize / 2;
+    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, kSize, kSize}, {0, 0, h, h}, {h, 0, kSize, h},
+                                  {0, h, h, kSize}, {h, h, kSize, kSize}}) {
+        const Estimate f = regionLuminance(full, x0, y0, x1, y1);
+        const Estimate d = regionLuminance(direct, x0, y0, x1, y1);
+        const Estimate i = regionLuminance(indirect, x0, y0, x1, y1);
+        const double sigma = std::sqrt(f.standardError * f.standardError + d.standardError * d.standardError +
+                                       i.standardError * i.standardError);
+        EXPECT_NEAR(f.mean, d.mean + i.mean, kSigmas * sigma) << "region " << x0 << "," << y0;
+    }
+}
+
+TEST(PathTracer, LightSamplingWithMisAgreesWithBrdfSamplingAlone) {
+    // Two estimators of the same integral: emissive triangles found by light sampling and BRDF
+    // sampling combined by MIS, or by BRDF sampling alone. A wrong density or weight on either side
+    // (area-to-solid-angle conversion, emitter choice, back faces, shadow rays) makes them differ.
+    const Scene scene = makeTestRoom();
+    PathTracer tracer = createPathTracer(scene);
+    constexpr uint32_t kSize = 16;
+    const RenderResult mis = render(tracer, smallRender(scene, kSize, 128, Component::Indirect, 31));
+    tracer.sampleEmitters = false;
+    const RenderResult brdfOnly = render(tracer, smallRender(scene, kSize, 128, Component::Indirect, 32));
+    ASSERT_TRUE(allFinite(mis.image) && allFinite(brdfOnly.image));
+    EXPECT_LT(mis.meanLuminanceStandardError, brdfOnly.meanLuminanceStandardError);  // why MIS is used
+    const uint32_t h = kSize / 2;
+    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, kSize, kSize}, {0, 0, h, h}, {h, 0, kSize, h},
+                                  {0, h, h, kSize}, {h, h, kSize, kSize}}) {
+        const Estimate a = regionLuminance(mis, x0, y0, x1, y1);
+        const Estimate b = regionLuminance(brdfOnly, x0, y0, x1, y1);
+        EXPECT_NEAR(a.mean, b.mean, kSigmas * std::hypot(a.standardError, b.standardError))
+            << "region " << x0 << "," << y0;
+    }
+}
+
+TEST(Bvh, ClosestHitMatchesBruteForceOnRandomRays) {
+    std::mt19937 random(1234);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    auto randomPoint = [&] { return glm::vec3(unit(random), unit(random), unit(random)); };
+    Scene scene;
+    addMaterial(scene, lambertian(glm::vec3(0.5f)));
+    for (int i = 0; i < 400; ++i) {
+        const glm::vec3 center = randomPoint();
+        addTriangle(scene, center + 0.2f * randomPoint(), center + 0.2f * randomPoint(),
+                    center + 0.2f * randomPoint(), 0);
+    }
+    // Zero-area triangles: never hit, never a NaN.
+    const glm::vec3 p = randomPoint();
+    scene.vertices.push_back({p});
+    scene.vertices.push_back({p});
+    scene.vertices.push_back({p + glm::vec3(0.1f)});
+    for (uint32_t i = 0; i < 3; ++i) scene.indices.push_back(uint32_t(scene.vertices.size()) - 3 + i);
+    scene.triangleMaterials.push_back(0);
+
+    const Bvh bvh = buildBvh(scene);
+    int hits = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const glm::vec3 origin = 2.0f * randomPoint();
+        Ray ray{origin, glm::normalize(0.8f * randomPoint() - origin), 1e30f};
+        std::optional<RayHit> expected;
+        for (uint32_t t = 0; t < scene.triangleCount(); ++t) {
+            const TrianglePositions tri{scene.vertices[scene.indices[3 * t]].position,
+                                        scene.vertices[scene.indices[3 * t + 1]].position,
+                                        scene.vertices[scene.indices[3 * t + 2]].position};
+            Ray shortened = ray;
+            shortened.tMax = expected ? expected->t : ray.tMax;
+            if (std::optional<RayHit> hit = intersectTriangle(shortened, tri)) {
+                expected = hit;
+                expected->triangle = t;
+            }
+        }
+        const std::optional<RayHit> actual = closestHit(bvh, ray);
+        ASSERT_EQ(actual.has_value(), expected.has_value()) << "ray " << i;
+        EXPECT_EQ(anyHit(bvh, ray), expected.has_value());
+        if (!expected) continue;
+        ++hits;
+        EXPECT_EQ(actual->triangle, expected->triangle) << "ray " << i;
+        EXPECT_EQ(actual->t, expected->t) << "ray " << i;
+        ray.tMax = expected->t * 0.9999f;  // nothing lies nearer than the closest hit
+        EXPECT_FALSE(anyHit(bvh, ray)) << "ray " << i;
+    }
+    EXPECT_GT(hits, 2500);
+}
+
+TEST(Bvh, WatertightGridLetsNoRayThroughSharedEdgesAndVertices) {
+    Scene scene;
+    addMaterial(scene, lambertian(glm::vec3(0.5f)));
+    constexpr int kCells = 8;
+    for (int i = 0; i < kCells; ++i) {
+        for (int j = 0; j < kCells; ++j) {
+            const float x = 0.1f * float(i), z = 0.1f * float(j);
+            addQuad(scene, {glm::vec3(x, 0.3f, z), glm::vec3(x + 0.1f, 0.3f, z), glm::vec3(x + 0.1f, 0.3f, z + 0.1f),
+                            glm::vec3(x, 0.3f, z + 0.1f)},
+                    glm::vec3(x, 1.0f, z), 0);
+        }
+    }
+    const Bvh bvh = buildBvh(scene);
+    // Rays aimed exactly at interior vertices and edge midpoints, from oblique directions.
+    for (int i = 1; i < 2 * kCells; ++i) {
+        for (int j = 1; j < 2 * kCells; ++j) {
+            const glm::vec3 target(0.05f * float(i), 0.3f, 0.05f * float(j));
+            for (const glm::vec3 from : {glm::vec3(0.13f, 1.7f, -0.4f), glm::vec3(-1.0f, 2.0f, 0.3f),
+                                         glm::vec3(0.4f, -1.3f, 0.4f)}) {
+                const Ray ray{from, glm::normalize(target - from), 1e30f};
+                EXPECT_TRUE(closestHit(bvh, ray).has_value()) << i << "," << j;
+            }
+        }
+    }
+}
+
+// ∫ g(L) dω over the upper hemisphere about +z by the midpoint rule in (cosθ, φ), where dω = dcosθ dφ.
+template <typename Integrand>
+double integrateHemisphere(Integrand g) {
+    constexpr int kSteps = 1000;
+    double sum = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const float z = (float(i) + 0.5f) / kSteps, r = std::sqrt(1.0f - z * z);
+        for (int j = 0; j < kSteps; ++j) {
+            const float phi = 2.0f * kPi * (float(j) + 0.5f) / kSteps;
+            sum += g(glm::vec3(r * std::cos(phi), r * std::sin(phi), z));
+        }
+    }
+    return sum * 2.0 * kPi / (double(kSteps) * kSteps);
+}
+
+// Mean and standard error of g(sample) over sampleBsdf's draws, a failed draw counting as 0.
+template <typename Estimator>
+Estimate sampleMean(const SurfaceMaterial& material, const glm::vec3& V, int count, Estimator g) {
+    Rng rng = Rng::forSample(9, 0, 0);
+    double sum = 0.0, squares = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+        if (const std::optional<BsdfSample> s = sampleBsdf(material, glm::vec3(0, 0, 1), V, uLobe, u1, u2)) {
+            const double value = g(*s);
+            sum += value;
+            squares += value * value;
+        }
+    }
+    const double mean = sum / count;
+    return {mean, std::sqrt(std::max(0.0, squares / count - mean * mean) / count)};
+}
+
+glm::vec3 viewAt(float NdotV) { return glm::vec3(std::sqrt(1.0f - NdotV * NdotV), 0.0f, NdotV); }
+
+TEST(Bsdf, DensityIntegratesToTheShareOfSamplesAboveTheHorizon) {
+    // Visible-normal samples reflected below the horizon are discarded, so the density over the
+    // hemisphere integrates to the probability that a draw succeeds (1 for a pure diffuse lobe).
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (SurfaceMaterial material : {SurfaceMaterial{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f},
+                                     SurfaceMaterial{glm::vec3(0.5f), 0.0f, 0.5f, 1.0f},
+                                     SurfaceMaterial{glm::vec3(0.5f), 0.0f, 0.5f, 0.0f}}) {
+        for (float roughness : {0.5f, 0.75f, 1.0f}) {
+            material.roughness = roughness;
+            for (float NdotV : {0.2f, 0.7f, 1.0f}) {
+                const glm::vec3 V = viewAt(NdotV);
+                const double integral = integrateHemisphere([&](glm::vec3 L) { return bsdfPdf(material, N, V, L); });
+                const Estimate success = sampleMean(material, V, 200000, [](const BsdfSample&) { return 1.0; });
+                EXPECT_LE(integral, 1.0 + kPdfIntegralTolerance);
+                EXPECT_NEAR(integral, success.mean, kPdfIntegralTolerance)
+                    << "metallic " << material.metallic << " roughness " << roughness << " N·V " << NdotV;
+            }
+        }
+    }
+}
+
+TEST(Bsdf, SampledDirectionsFollowTheirDensity) {
+    // If directions are drawn with density p, the mean of cosθ / p is ∫ cosθ dω = π (GGX's density is
+    // positive over the whole hemisphere, so every direction can be drawn).
+    SurfaceMaterial metal{glm::vec3(1.0f), 1.0f, 0.6f, 1.0f};
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (float roughness : {0.6f, 1.0f}) {
+        metal.roughness = roughness;
+        for (float NdotV : {0.3f, 0.9f}) {
+            const glm::vec3 V = viewAt(NdotV);
+            const Estimate estimate = sampleMean(metal, V, 400000, [&](const BsdfSample& s) {
+                EXPECT_NEAR(s.pdf, bsdfPdf(metal, N, V, s.direction), 1e-3f * s.pdf);
+                return double(s.direction.z) / s.pdf;
+            });
+            EXPECT_NEAR(estimate.mean, kPi, kSamplerTolerance * kPi)
+                << "roughness " << roughness << " N·V " << NdotV;
+        }
+    }
+}
+
+TEST(Bsdf, WhiteMetalReflectsAtMostAllLightAndNeverNaN) {
+    // Directional albedo ∫ f cosθ dω of a white metal, estimated with the sampler's weights: never
+    // above 1, and equal to the quadrature where the lobe is wide enough for it.
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (float roughness : {0.0f, 0.05f, 0.3f, 0.6f, 1.0f}) {
+        const SurfaceMaterial metal{glm::vec3(1.0f), 1.0f, roughness, 1.0f};
+        for (float NdotV : {0.02f, 0.3f, 1.0f}) {
+            const glm::vec3 V = viewAt(NdotV);
+            const Estimate albedo = sampleMean(metal, V, 100000, [](const BsdfSample& s) {
+                EXPECT_TRUE(std::isfinite(s.weight.x + s.weight.y + s.weight.z));
+                return double(s.weight.x);
+            });
+            EXPECT_LE(albedo.mean, 1.0 + kSigmas * albedo.standardError)
+                << "roughness " << roughness << " N·V " << NdotV;
+            EXPECT_GT(albedo.mean, 0.25) << "roughness " << roughness << " N·V " << NdotV;
+            if (roughness >= 0.6f) {
+                const double reference = integrateHemisphere(
+                    [&](glm::vec3 L) { return double(evaluateBsdf(metal, N, V, L).x) * L.z; });
+                EXPECT_NEAR(albedo.mean, reference, kSigmas * albedo.standardError + 0.002)
+                    << "roughness " << roughness << " N·V " << NdotV;
+            }
+        }
+    }
+}
+
+TEST(PathTracer, WhiteMetalSphereInUniformLightIsNoBrighterThanTheLight) {
+    // A convex white metal reflects each direction's light once: radiance = directional albedo ≤ E.
+    Scene scene;
+    const uint32_t sky = addMaterial(scene, lambertian(glm::vec3(0.0f), glm::vec3(1.0f)));
+    Material metal;
+    metal.baseColorFactor = glm::vec4(1.0f);
+    metal.metallic = 1.0f;
+    metal.roughness = 0.5f;
+    const uint32_t sphere = addMaterial(scene, metal);
+    addInwardBox(scene, 2.0f, {sky, sky, sky, sky, sky, sky});
+    addSphere(scene, glm::vec3(0.0f), 0.6f, sphere, 24, 48);
+    scene.cameras.push_back(cameraLookingAt(glm::vec3(0.0f, 0.3f, 1.8f), glm::vec3(0.0f), 0.9f));
+    const PathTracer tracer = createPathTracer(scene);
+    const RenderResult result = render(tracer, smallRender(scene, 24, 32, Component::Full, 21));
+    ASSERT_TRUE(allFinite(result.image));
+    EXPECT_EQ(result.discardedSamples, 0u);
+    for (uint32_t y = 0; y < 24; ++y) {
+        for (uint32_t x = 0; x < 24; ++x) {
+            const double sigma = std::sqrt(result.luminanceVariance[size_t(y) * 24 + x]);
+            for (int c = 0; c < 3; ++c) EXPECT_LE(result.image.pixel(x, y)[c], 1.0 + 1e-5 + kSigmas * sigma);
+        }
+    }
+    // The sphere's centre, seen head-on: the directional albedo at N·V = 1, which needs light sampling
+    // and BRDF sampling to be combined correctly.
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const SurfaceMaterial white{glm::vec3(1.0f), 1.0f, metal.roughness, 1.0f};
+    const double albedo = integrateHemisphere([&](glm::vec3 L) { return evaluateBsdf(white, N, N, L).x * L.z; });
+    const double sigma = std::sqrt(result.luminanceVariance[12 * 24 + 12]);
+    EXPECT_NEAR(result.image.pixel(12, 12)[0], albedo, kSigmas * sigma + 0.01 * albedo);
+}
+
+}  // namespace
+}  // namespace vct::pt

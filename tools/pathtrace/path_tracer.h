@@ -1,0 +1,97 @@
+// The reference path tracer: unidirectional path tracing with next-event estimation, the
+// renderer's own BRDF (shaders_glsl/brdf.h) and light falloff (shaders_glsl/lights.h).
+//
+// Model, shared with the GPU renderer so their images can be compared:
+// - Every surface reflects on both sides: the shading normal is flipped towards the viewer.
+//   Reflection must also stay on the viewer's side of the geometric normal (no light through
+//   a surface when the shading normal bends away from it).
+// - Emission (Material::emission, radiance) leaves only the front face: the side the
+//   interpolated vertex normal points to.
+// - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Alpha is
+//   ignored (all surfaces are opaque). There is no environment light.
+// - Punctual lights (KHR_lights_punctual, no photometric factor) are delta lights, reached only
+//   by next-event estimation. Emissive triangles are sampled by area, chosen with probability
+//   ∝ area × luminance(emission), and combined with BRDF sampling by the power heuristic.
+//
+// Components: `Direct` is the emission the camera sees plus the punctual lights' light at the
+// first hit; `Indirect` is everything else; `Full` is their sum.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bvh.h"
+#include "io/image_io.h"
+#include "sampling.h"
+#include "scene/scene.h"
+
+namespace vct::pt {
+
+enum class Component { Full, Direct, Indirect };
+
+struct LinearTexture {
+    uint32_t width = 0, height = 0;
+    std::vector<glm::vec3> texels;  // linear RGB, top row first
+};
+
+// Emissive triangles and the distribution they are sampled with.
+struct EmitterTable {
+    std::vector<uint32_t> triangles;
+    std::vector<float> cdf;      // cumulative probability per entry of `triangles`
+    std::vector<float> areaPdf;  // per Scene triangle: P(chosen) / area, 0 for the non-emissive
+};
+
+// Everything the integrator needs; the Scene must outlive it.
+struct PathTracer {
+    const Scene* scene = nullptr;
+    Bvh bvh;
+    std::vector<LinearTexture> textures;
+    EmitterTable emitters;
+    uint32_t maxDepth = 64;  // a safety net: Russian roulette ends paths long before
+    // false: emissive surfaces are found by BRDF sampling alone, an independent (noisier) estimator
+    // that the tests hold the MIS one against.
+    bool sampleEmitters = true;
+};
+
+PathTracer createPathTracer(const Scene& scene);
+
+// The radiance arriving along `ray` (unit direction) from the chosen component.
+glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng& rng);
+
+struct RenderSettings {
+    uint32_t width = 64;
+    uint32_t height = 64;
+    uint32_t samplesPerPixel = 16;
+    Component component = Component::Full;
+    uint64_t seed = 1;
+    uint32_t threads = 0;           // 0 = all hardware threads
+    double timeLimitSeconds = 0.0;  // 0 = none; otherwise stop after the pass that passes it
+    Camera camera;
+};
+
+struct RenderResult {
+    Image image;                           // mean radiance per pixel
+    // Estimated variance of each pixel's mean luminance, from its samples' spread as if they were
+    // independent: an upper bound, since the pixel positions are stratified.
+    std::vector<float> luminanceVariance;
+    uint32_t samplesPerPixel = 0;          // fewer than asked when the time limit stopped the render
+    double seconds = 0.0;
+    double meanLuminance = 0.0;
+    double meanLuminanceStandardError = 0.0;  // of meanLuminance, from the per-pixel variances
+    double relativeNoise = 0.0;  // RMS per-pixel standard error ÷ mean luminance
+    uint64_t discardedSamples = 0;  // non-finite path results (a bug if ever non-zero)
+};
+
+// A camera at `position` looking at `target`, +Y up, vertical field of view in radians.
+Camera cameraLookingAt(const glm::vec3& position, const glm::vec3& target, float yfov);
+
+// The primary ray through image position (x, y) in pixels, (0, 0) the top-left corner.
+Ray cameraRay(const Camera& camera, uint32_t width, uint32_t height, float x, float y);
+
+// Renders the image; each sample's random numbers depend only on (seed, pixel, sample index), so
+// the result does not depend on the number of threads.
+RenderResult render(const PathTracer& tracer, const RenderSettings& settings);
+
+}  // namespace vct::pt
