@@ -178,7 +178,7 @@ int run(int argc, char** argv) {
 
     std::printf("%s: %ux%u, %u spp (%s), %.2f s on %u threads\n", options.scene.c_str(), s.width, s.height,
                 result.samplesPerPixel, modeName(s.component), result.seconds, threads);
-    std::printf("mean luminance %.6g ± %.2g; per-pixel noise (RMS standard error / mean luminance) %.3g %%\n",
+    std::printf("mean luminance %.6g ± %.2g; per-pixel relative noise %.3g %% (sqrt of relative MSE)\n",
                 result.meanLuminance, result.meanLuminanceStandardError, 100.0 * result.relativeNoise);
     if (result.samplesPerPixel < 2) std::printf("(one sample per pixel: the noise cannot be estimated)\n");
     if (result.discardedSamples > 0) {

@@ -18,6 +18,7 @@ namespace {
 
 constexpr uint32_t kRouletteStartDepth = 3;
 constexpr uint32_t kSamplesPerPass = 4;
+constexpr double kRelativeNoiseEpsilon = 0.01;  // keeps black pixels from dividing by zero
 constexpr uint64_t kPixelOffsetStream = ~uint64_t(0);  // a stream no sample index reaches
 
 float luminance(const glm::vec3& c) { return glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
@@ -130,9 +131,9 @@ glm::vec3 offsetRayOrigin(const glm::vec3& p, const glm::vec3& n) {
     constexpr float kOrigin = 1.0f / 32.0f, kFloatScale = 1.0f / 65536.0f, kIntScale = 256.0f;
     glm::vec3 result;
     for (int i = 0; i < 3; ++i) {
-        const int32_t offset = int32_t(kIntScale * n[i]);
-        const float shifted =
-            std::bit_cast<float>(std::bit_cast<int32_t>(p[i]) + (p[i] < 0.0f ? -offset : offset));
+        const int64_t offset = int64_t(kIntScale * n[i]);
+        const int64_t bits = int64_t(std::bit_cast<int32_t>(p[i])) + (p[i] < 0.0f ? -offset : offset);
+        const float shifted = std::bit_cast<float>(uint32_t(bits));
         result[i] = std::abs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : shifted;
     }
     return result;
@@ -415,7 +416,7 @@ RenderResult render(const PathTracer& tracer, const RenderSettings& settings) {
     result.image.rgb.resize(pixelCount * 3);
     result.luminanceVariance.resize(pixelCount);
     const double n = done;
-    double luminanceTotal = 0.0, varianceTotal = 0.0;
+    double luminanceTotal = 0.0, varianceTotal = 0.0, relativeVarianceTotal = 0.0;
     for (size_t pixel = 0; pixel < pixelCount; ++pixel) {
         const glm::dvec3 mean = sums[pixel] / n;
         for (int c = 0; c < 3; ++c) result.image.rgb[3 * pixel + c] = float(mean[c]);
@@ -427,11 +428,11 @@ RenderResult render(const PathTracer& tracer, const RenderSettings& settings) {
         result.luminanceVariance[pixel] = float(sampleVariance / n);
         luminanceTotal += meanLuminance;
         varianceTotal += sampleVariance / n;
+        relativeVarianceTotal += sampleVariance / n / (meanLuminance * meanLuminance + kRelativeNoiseEpsilon);
     }
     result.meanLuminance = luminanceTotal / double(pixelCount);
     result.meanLuminanceStandardError = std::sqrt(varianceTotal) / double(pixelCount);
-    result.relativeNoise =
-        result.meanLuminance > 0.0 ? std::sqrt(varianceTotal / double(pixelCount)) / result.meanLuminance : 0.0;
+    result.relativeNoise = std::sqrt(relativeVarianceTotal / double(pixelCount));
     return result;
 }
 

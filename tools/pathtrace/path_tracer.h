@@ -80,7 +80,10 @@ struct RenderResult {
     double seconds = 0.0;
     double meanLuminance = 0.0;
     double meanLuminanceStandardError = 0.0;  // of meanLuminance, from the per-pixel variances
-    double relativeNoise = 0.0;  // RMS per-pixel standard error ÷ mean luminance
+    // sqrt of the mean over pixels of σ²/(μ² + 0.01), σ the standard error and μ the mean of a pixel's
+    // luminance: the relative MSE of denoising papers (e.g. Rousselle et al. 2011), which a few very
+    // bright pixels do not dominate.
+    double relativeNoise = 0.0;
     uint64_t discardedSamples = 0;  // non-finite path results (a bug if ever non-zero)
 };
 
