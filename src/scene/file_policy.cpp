@@ -63,7 +63,8 @@ static bool isInside(const fs::path& path, const fs::path& root) {
 
 ResolvedUri resolveUri(const FilePolicy& policy, const fs::path& baseFolder, const std::string& uri) {
     if (uri.empty()) return {{}, "is empty"};
-    if (hasScheme(uri)) return {{}, "is not a relative path or a data: URI (only files beside the scene are read)"};
+    if (hasScheme(uri))
+        return {{}, "is not a relative path or a data: URI (only files beside the scene are read)"};
     const std::string decoded = percentDecode(uri);
     if (decoded.find('\0') != std::string::npos) return {{}, "contains a NUL character"};
     if (decoded[0] == '/' || decoded[0] == '\\')

@@ -11,11 +11,11 @@
 #include <map>
 #include <set>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
-#include <tiny_gltf.h>
 
 #include "error.h"
 #include "scene/file_policy.h"
@@ -40,9 +40,9 @@ struct ParseContext {
     std::string file;
     // tinygltf asks for "<base dir>/<its own decoding of the URI>"; only these paths exist for it.
     std::map<std::string, fs::path> vettedFiles;
-    std::set<int> baseColorImages;           // images worth decoding
+    std::set<int> baseColorImages;             // images worth decoding
     std::map<int, std::string> imageProblems;  // why an image has no pixels
-    std::string fatal;                       // a problem found inside a callback that must stop the load
+    std::string fatal;                         // a problem found inside a callback that must stop the load
     const tinygltf::Model* model = nullptr;
 };
 
@@ -81,7 +81,8 @@ bool fileExists(const std::string& path, void* user) {
 
 std::string expandFilePath(const std::string& path, void*) { return path; }  // no `~` or `$VAR` expansion
 
-bool readWholeFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path, void* user) {
+bool readWholeFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path,
+                   void* user) {
     const ParseContext& context = *static_cast<ParseContext*>(user);
     const auto vetted = context.vettedFiles.find(path);
     std::string problem = "was not vetted by the file policy";
@@ -112,9 +113,9 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         const size_t bufferBytes = context.model->buffers[size_t(view.buffer)].data.size();
         if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset ||
             view.byteLength > size_t(INT32_MAX)) {
-            context.fatal = context.file + ": " + at("images", size_t(imageIndex)) + ".bufferView: bufferView " +
-                            std::to_string(image->bufferView) + " runs past the end of buffer " +
-                            std::to_string(view.buffer);
+            context.fatal = context.file + ": " + at("images", size_t(imageIndex)) +
+                            ".bufferView: bufferView " + std::to_string(image->bufferView) +
+                            " runs past the end of buffer " + std::to_string(view.buffer);
             return false;
         }
     }
@@ -126,8 +127,9 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         return true;
     }
     if (width > kMaxImageSide || height > kMaxImageSide) {
-        context.imageProblems[imageIndex] = name + " is " + std::to_string(width) + "×" + std::to_string(height) +
-                                            ", larger than " + std::to_string(kMaxImageSide) + " on a side";
+        context.imageProblems[imageIndex] = name + " is " + std::to_string(width) + "×" +
+                                            std::to_string(height) + ", larger than " +
+                                            std::to_string(kMaxImageSide) + " on a side";
         return true;
     }
     stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
@@ -157,6 +159,13 @@ std::string jsonText(const std::vector<uint8_t>& bytes, bool binary) {
     return std::string(bytes.begin() + 20, bytes.begin() + 20 + chunkLength);
 }
 
+// The member `key` of a JSON object, or null (a const operator[] on a missing key is undefined).
+const nlohmann::json* member(const nlohmann::json* object, const char* key) {
+    if (!object || !object->is_object()) return nullptr;
+    const auto found = object->find(key);
+    return found == object->end() ? nullptr : &*found;
+}
+
 // Step 1: applies the file policy to every buffer and image URI before tinygltf sees the file.
 // A refused buffer stops the load; a refused image becomes a missing image (a warning).
 void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext& context) {
@@ -167,8 +176,9 @@ void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext&
         if (found == document.end() || !found->is_array()) return;
         for (size_t i = 0; i < found->size(); ++i) {
             const nlohmann::json& entry = (*found)[i];
-            if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
-            const std::string uri = entry["uri"].get<std::string>();
+            const nlohmann::json* uriValue = member(&entry, "uri");
+            if (!uriValue || !uriValue->is_string()) continue;
+            const std::string uri = uriValue->get<std::string>();
             if (isDataUri(uri)) continue;
             const ResolvedUri resolved = resolveUri(context.policy, sceneFolder, uri);
             if (!resolved.problem.empty()) {
@@ -179,10 +189,12 @@ void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext&
             }
             std::error_code error;
             const uint64_t fileBytes = fs::file_size(resolved.path, error);
-            if (required && !error && entry.contains("byteLength") && entry["byteLength"].is_number_unsigned() &&
-                entry["byteLength"].get<uint64_t>() > fileBytes)
-                throw Error(context.file + ": " + at(list, i) + ": '" + uri + "' holds " + std::to_string(fileBytes) +
-                            " bytes, fewer than its byteLength " + std::to_string(entry["byteLength"].get<uint64_t>()));
+            const nlohmann::json* byteLength = member(&entry, "byteLength");
+            if (required && !error && byteLength && byteLength->is_number_unsigned() &&
+                byteLength->get<uint64_t>() > fileBytes)
+                throw Error(context.file + ": " + at(list, i) + ": '" + uri + "' holds " +
+                            std::to_string(fileBytes) + " bytes, fewer than its byteLength " +
+                            std::to_string(byteLength->get<uint64_t>()));
             context.vettedFiles[joinPath(sceneFolder.string(), tinygltfUrlDecode(uri))] = resolved.path;
         }
     };
@@ -192,19 +204,15 @@ void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext&
     // Only base colour images are decoded; the others are not used by the renderer.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
-    if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
+    if (materials == document.end() || !materials->is_array() || textures == document.end() ||
+        !textures->is_array())
         return;
     for (const nlohmann::json& material : *materials) {
-        const nlohmann::json* index = nullptr;
-        if (material.is_object() && material.contains("pbrMetallicRoughness")) {
-            const nlohmann::json& pbr = material["pbrMetallicRoughness"];
-            if (pbr.is_object() && pbr.contains("baseColorTexture") && pbr["baseColorTexture"].is_object())
-                index = &pbr["baseColorTexture"]["index"];
-        }
+        const nlohmann::json* index =
+            member(member(member(&material, "pbrMetallicRoughness"), "baseColorTexture"), "index");
         if (!index || !index->is_number_unsigned() || index->get<size_t>() >= textures->size()) continue;
-        const nlohmann::json& texture = (*textures)[index->get<size_t>()];
-        if (texture.is_object() && texture.contains("source") && texture["source"].is_number_integer())
-            context.baseColorImages.insert(texture["source"].get<int>());
+        const nlohmann::json* source = member(&(*textures)[index->get<size_t>()], "source");
+        if (source && source->is_number_integer()) context.baseColorImages.insert(source->get<int>());
     }
 }
 
@@ -234,7 +242,8 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     context.file = path;
     context.policy.maxFileBytes = options.maxFileBytes;
     std::error_code error;
-    context.policy.root = options.allowedRoot.empty() ? sceneFolder : fs::canonical(options.allowedRoot, error);
+    context.policy.root =
+        options.allowedRoot.empty() ? sceneFolder : fs::canonical(options.allowedRoot, error);
     if (error) throw Error(path + ": the allowed folder '" + options.allowedRoot + "' " + error.message());
 
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -247,15 +256,16 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     gltf.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &context});
     gltf.SetImageLoader(&loadImage, &context);
     std::string errors, warnings;
-    const bool parsed =
-        binary ? gltf.LoadBinaryFromMemory(&model, &errors, &warnings, bytes.data(), unsigned(bytes.size()),
-                                           sceneFolder.string())
-               : gltf.LoadASCIIFromString(&model, &errors, &warnings, reinterpret_cast<const char*>(bytes.data()),
-                                          unsigned(bytes.size()), sceneFolder.string());
+    const bool parsed = binary ? gltf.LoadBinaryFromMemory(&model, &errors, &warnings, bytes.data(),
+                                                           unsigned(bytes.size()), sceneFolder.string())
+                               : gltf.LoadASCIIFromString(&model, &errors, &warnings,
+                                                          reinterpret_cast<const char*>(bytes.data()),
+                                                          unsigned(bytes.size()), sceneFolder.string());
     if (!context.fatal.empty()) throw Error(context.fatal);
     if (!parsed) {
         while (!errors.empty() && errors.back() == '\n') errors.pop_back();
-        throw Error(path + ": not a valid glTF file: " + (errors.empty() ? std::string("tinygltf gave no reason") : errors));
+        throw Error(path + ": not a valid glTF file: " +
+                    (errors.empty() ? std::string("tinygltf gave no reason") : errors));
     }
     result.imageProblems = std::move(context.imageProblems);
     return result;
@@ -297,7 +307,8 @@ struct Converter {
         int sceneTexture = -1;
         if (image.image.empty() || image.component != 4 || image.bits != 8) {
             const auto noted = imageProblems.find(imageIndex);
-            const std::string problem = noted != imageProblems.end() ? noted->second : description + " could not be read";
+            const std::string problem =
+                noted != imageProblems.end() ? noted->second : description + " could not be read";
             warn(at("images", size_t(imageIndex)),
                  problem + "; " + materialPath + " falls back to its base colour factor");
         } else {
@@ -313,10 +324,11 @@ struct Converter {
         return sceneTexture;
     }
 
-    static double extensionNumber(const tinygltf::ExtensionMap& extensions, const char* extension, const char* key,
-                                  double fallback) {
+    static double extensionNumber(const tinygltf::ExtensionMap& extensions, const char* extension,
+                                  const char* key, double fallback) {
         const auto found = extensions.find(extension);
-        if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key)) return fallback;
+        if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key))
+            return fallback;
         return found->second.Get(key).GetNumberAsDouble();
     }
 
@@ -329,11 +341,16 @@ struct Converter {
             if (pbr.baseColorFactor.size() == 4)
                 material.baseColorFactor = glm::vec4(glm::make_vec4(pbr.baseColorFactor.data()));
             material.baseColorTexture = baseColorTexture(at("materials", i), pbr.baseColorTexture.index);
+            if (material.baseColorTexture >= 0 && pbr.baseColorTexture.texCoord != 0)
+                warn(at("materials", i) + ".pbrMetallicRoughness.baseColorTexture.texCoord",
+                     "TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
+                         " is not read; the texture is sampled with TEXCOORD_0");
             material.metallic = float(pbr.metallicFactor);
             material.roughness = float(pbr.roughnessFactor);
-            material.specularWeight = float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
-            const double strength =
-                extensionNumber(source.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+            material.specularWeight =
+                float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
+            const double strength = extensionNumber(source.extensions, "KHR_materials_emissive_strength",
+                                                    "emissiveStrength", 1.0);
             if (source.emissiveFactor.size() == 3)
                 material.emission = glm::vec3(glm::make_vec3(source.emissiveFactor.data()) * strength);
             material.doubleSided = source.doubleSided;
@@ -355,9 +372,11 @@ struct Converter {
     static glm::dmat4 localTransform(const tinygltf::Node& node) {
         if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glTF
         glm::dmat4 transform(1.0);
-        if (node.translation.size() == 3) transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
+        if (node.translation.size() == 3)
+            transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
         if (node.rotation.size() == 4) {
-            const glm::dquat rotation(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // xyzw
+            const glm::dquat rotation(node.rotation[3], node.rotation[0], node.rotation[1],
+                                      node.rotation[2]);  // xyzw
             transform *= glm::mat4_cast(glm::normalize(rotation));
         }
         if (node.scale.size() == 3) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
@@ -376,12 +395,14 @@ struct Converter {
                 corners.insert(corners.end(), {indices[i], indices[i + 1 + odd], indices[i + 2 - odd]});
             }
         } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-            for (size_t i = 0; i + 2 < n; ++i) corners.insert(corners.end(), {indices[i + 1], indices[i + 2], indices[0]});
+            for (size_t i = 0; i + 2 < n; ++i)
+                corners.insert(corners.end(), {indices[i + 1], indices[i + 2], indices[0]});
         }
         return corners;
     }
 
-    void addPrimitive(const std::string& path, const tinygltf::Primitive& primitive, const glm::dmat4& world) {
+    void addPrimitive(const std::string& path, const tinygltf::Primitive& primitive,
+                      const glm::dmat4& world) {
         const int mode = primitive.mode;
         if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -404,15 +425,16 @@ struct Converter {
             for (size_t i = 0; i < vertexCount; ++i) indices[i] = uint32_t(i);
         }
         if ((mode == -1 || mode == TINYGLTF_MODE_TRIANGLES) && indices.size() % 3 != 0)
-            warn(path, std::to_string(indices.size()) + " indices are not a whole number of triangles; the last " +
+            warn(path, std::to_string(indices.size()) +
+                           " indices are not a whole number of triangles; the last " +
                            std::to_string(indices.size() % 3) + " are ignored");
         const std::vector<uint32_t> corners = triangleCorners(mode, indices);
 
         const auto normalAttribute = primitive.attributes.find("NORMAL");
         const auto uvAttribute = primitive.attributes.find("TEXCOORD_0");
-        const std::vector<float> normals =
-            normalAttribute != primitive.attributes.end() ? readAccessorFloats(model, normalAttribute->second)
-                                                          : std::vector<float>{};
+        const std::vector<float> normals = normalAttribute != primitive.attributes.end()
+                                               ? readAccessorFloats(model, normalAttribute->second)
+                                               : std::vector<float>{};
         const std::vector<float> uvs = uvAttribute != primitive.attributes.end()
                                            ? readAccessorFloats(model, uvAttribute->second)
                                            : std::vector<float>{};
@@ -436,13 +458,15 @@ struct Converter {
         const uint32_t material = uint32_t(materialOf(primitive));
         const bool mirrored = determinant < 0.0;  // a mirroring transform turns front faces into back faces
         if (scene.vertices.size() + std::max(vertexCount, corners.size()) > UINT32_MAX)
-            throw Error(scene.name + ": " + path + ": the scene has more vertices than 32-bit indices can address");
+            throw Error(scene.name + ": " + path +
+                        ": the scene has more vertices than 32-bit indices can address");
         const uint32_t base = uint32_t(scene.vertices.size());
         if (!normals.empty()) scene.vertices.insert(scene.vertices.end(), vertices.begin(), vertices.end());
         for (size_t t = 0; t + 2 < corners.size(); t += 3) {
             uint32_t a = corners[t], b = corners[t + 1], c = corners[t + 2];
             if (mirrored) std::swap(b, c);
-            const glm::vec3 faceNormal = faceNormalOf(vertices[a].position, vertices[b].position, vertices[c].position);
+            const glm::vec3 faceNormal =
+                faceNormalOf(vertices[a].position, vertices[b].position, vertices[c].position);
             if (normals.empty()) {
                 // Flat shading: three vertices of its own per triangle, all with the face normal.
                 const uint32_t first = uint32_t(scene.vertices.size());
@@ -455,7 +479,8 @@ struct Converter {
             } else {
                 for (uint32_t corner : {a, b, c}) {
                     Vertex& vertex = scene.vertices[base + corner];
-                    if (vertex.normal == glm::vec3(0.0f)) vertex.normal = faceNormal;  // a zero normal in the file
+                    if (vertex.normal == glm::vec3(0.0f))
+                        vertex.normal = faceNormal;  // a zero normal in the file
                 }
                 scene.indices.insert(scene.indices.end(), {base + a, base + b, base + c});
             }
@@ -481,7 +506,8 @@ struct Converter {
     void addCamera(const std::string& path, const tinygltf::Node& node, const glm::dmat4& world) {
         const tinygltf::Camera& source = model.cameras[size_t(node.camera)];
         if (source.type != "perspective") {
-            warn(at("cameras", size_t(node.camera)), "orthographic cameras are not supported; the camera is skipped");
+            warn(at("cameras", size_t(node.camera)),
+                 "orthographic cameras are not supported; the camera is skipped");
             return;
         }
         glm::dvec3 forward;
@@ -546,7 +572,8 @@ struct Converter {
     void convertNodes() {
         std::vector<std::pair<int, glm::dmat4>> pending;
         const std::vector<int> roots = rootNodes();
-        for (auto root = roots.rbegin(); root != roots.rend(); ++root) pending.emplace_back(*root, glm::dmat4(1.0));
+        for (auto root = roots.rbegin(); root != roots.rend(); ++root)
+            pending.emplace_back(*root, glm::dmat4(1.0));
         while (!pending.empty()) {
             const auto [index, parentWorld] = pending.back();
             pending.pop_back();
@@ -556,11 +583,13 @@ struct Converter {
             if (node.mesh >= 0) {
                 const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
                 for (size_t p = 0; p < mesh.primitives.size(); ++p)
-                    addPrimitive(at(at("meshes", size_t(node.mesh)) + ".primitives", p), mesh.primitives[p], world);
+                    addPrimitive(at(at("meshes", size_t(node.mesh)) + ".primitives", p), mesh.primitives[p],
+                                 world);
             }
             if (node.camera >= 0) addCamera(path, node, world);
             const auto light = node.extensions.find("KHR_lights_punctual");
-            if (light != node.extensions.end()) addLight(path, light->second.Get("light").GetNumberAsInt(), world);
+            if (light != node.extensions.end())
+                addLight(path, light->second.Get("light").GetNumberAsInt(), world);
             for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
                 pending.emplace_back(*child, world);
         }

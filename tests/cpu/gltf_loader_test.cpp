@@ -51,9 +51,15 @@ void expectQuadLoadsWithIndexType(int componentType) {
     EXPECT_EQ(scene.triangleMaterials.size(), 2u);
 }
 
-TEST(GltfLoader, ReadsUnsignedByteIndices) { expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE); }
-TEST(GltfLoader, ReadsUnsignedShortIndices) { expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT); }
-TEST(GltfLoader, ReadsUnsignedIntIndices) { expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT); }
+TEST(GltfLoader, ReadsUnsignedByteIndices) {
+    expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
+}
+TEST(GltfLoader, ReadsUnsignedShortIndices) {
+    expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+}
+TEST(GltfLoader, ReadsUnsignedIntIndices) {
+    expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+}
 
 TEST(GltfLoader, NonIndexedPrimitiveUsesVerticesInOrder) {
     GltfBuilder gltf = test::triangleScene();
@@ -77,8 +83,10 @@ TEST(GltfLoader, AppliesNodeHierarchyTransforms) {
     // Parent: translate (10,0,0) · rotate 90° about +Y · scale 2. Child: a matrix translating (0,1,0).
     const float half = std::sqrt(0.5f);
     gltf.document["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1};
-    const int parent = gltf.addNode(
-        {{"translation", {10, 0, 0}}, {"rotation", {0, half, 0, half}}, {"scale", {2, 2, 2}}, {"children", {0}}});
+    const int parent = gltf.addNode({{"translation", {10, 0, 0}},
+                                     {"rotation", {0, half, 0, half}},
+                                     {"scale", {2, 2, 2}},
+                                     {"children", {0}}});
     gltf.setScene({parent});
     const Scene scene = loadBuilt(gltf);
     ASSERT_EQ(scene.triangleCount(), 1u);
@@ -151,10 +159,11 @@ TEST(GltfLoader, ReadsInterleavedAttributesThroughByteStride) {
     // position xyz + uv per vertex, 20 bytes apart.
     const std::vector<float> interleaved = {0, 0, 0, 0.1f, 0.2f, 1, 0, 0, 0.3f, 0.4f, 0, 1, 0, 0.5f, 0.6f};
     const int view = gltf.addBufferView(interleaved.data(), interleaved.size() * sizeof(float), 20);
-    const int positions = gltf.append("accessors", {{"bufferView", view}, {"componentType", 5126}, {"count", 3},
-                                                    {"type", "VEC3"}});
-    const int uvs = gltf.append("accessors", {{"bufferView", view}, {"byteOffset", 12}, {"componentType", 5126},
-                                              {"count", 3}, {"type", "VEC2"}});
+    const int positions = gltf.append(
+        "accessors", {{"bufferView", view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+    const int uvs = gltf.append(
+        "accessors",
+        {{"bufferView", view}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
     gltf.setScene({gltf.addNode({{"mesh", gltf.addMesh({{"POSITION", positions}, {"TEXCOORD_0", uvs}})}})});
     const Scene scene = loadBuilt(gltf);
     ASSERT_EQ(scene.triangleCount(), 1u);
@@ -224,8 +233,8 @@ TEST(GltfLoader, ConvertsMaterialFactorsAndExtensions) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["materials"] = json::array(
         {{{"name", "glowing"},
-          {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 0.125, 1.0}}, {"metallicFactor", 0.3},
-                                    {"roughnessFactor", 0.7}}},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {0.5, 0.25, 0.125, 1.0}}, {"metallicFactor", 0.3}, {"roughnessFactor", 0.7}}},
           {"emissiveFactor", {1.0, 0.5, 0.0}},
           {"doubleSided", true},
           {"extensions",
@@ -274,7 +283,8 @@ TEST(GltfLoader, PlacesPerspectiveCameraInWorldSpace) {
          {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}, {"zfar", 100.0}}}}});
     const float half = std::sqrt(0.5f);
     // Turned 90° about +Y: local −Z (forward) becomes world −X.
-    const int first = gltf.addNode({{"camera", 0}, {"translation", {1, 2, 3}}, {"rotation", {0, half, 0, half}}});
+    const int first =
+        gltf.addNode({{"camera", 0}, {"translation", {1, 2, 3}}, {"rotation", {0, half, 0, half}}});
     const int second = gltf.addNode({{"camera", 1}, {"scale", {1, 3, 1}}});
     gltf.setScene({first, second});
     const Scene scene = loadBuilt(gltf);
@@ -293,8 +303,9 @@ TEST(GltfLoader, PlacesPerspectiveCameraInWorldSpace) {
 
 TEST(GltfLoader, SkipsOrthographicCamerasWithAWarning) {
     GltfBuilder gltf;
-    gltf.document["cameras"] = json::array(
-        {{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}}});
+    gltf.document["cameras"] =
+        json::array({{{"type", "orthographic"},
+                      {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}}});
     gltf.setScene({gltf.addNode({{"camera", 0}})});
     const Scene scene = loadBuilt(gltf);
     EXPECT_TRUE(scene.cameras.empty());
@@ -315,8 +326,8 @@ Scene sceneWithLight(const json& light) {
 }
 
 TEST(GltfLoader, PlacesDirectionalLightAlongNodeMinusZ) {
-    const Scene scene =
-        sceneWithLight({{"type", "directional"}, {"color", {1.0, 0.9, 0.8}}, {"intensity", 3.5}, {"name", "sun"}});
+    const Scene scene = sceneWithLight(
+        {{"type", "directional"}, {"color", {1.0, 0.9, 0.8}}, {"intensity", 3.5}, {"name", "sun"}});
     ASSERT_EQ(scene.lights.size(), 1u);
     const Light& light = scene.lights[0];
     EXPECT_EQ(light.type, LightType::Directional);
@@ -338,8 +349,9 @@ TEST(GltfLoader, PlacesPointLightAtNodeTranslation) {
 }
 
 TEST(GltfLoader, PlacesSpotLightWithConeAngles) {
-    const Scene scene = sceneWithLight(
-        {{"type", "spot"}, {"intensity", 100.0}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
+    const Scene scene = sceneWithLight({{"type", "spot"},
+                                        {"intensity", 100.0},
+                                        {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
     ASSERT_EQ(scene.lights.size(), 1u);
     const Light& light = scene.lights[0];
     EXPECT_EQ(light.type, LightType::Spot);
@@ -347,7 +359,8 @@ TEST(GltfLoader, PlacesSpotLightWithConeAngles) {
     expectNear(light.direction, {0, 1, 0});
     EXPECT_FLOAT_EQ(light.innerConeAngle, 0.2f);
     EXPECT_FLOAT_EQ(light.outerConeAngle, 0.5f);
-    EXPECT_FLOAT_EQ(sceneWithLight({{"type", "spot"}, {"spot", json::object()}}).lights[0].outerConeAngle, kPi / 4)
+    EXPECT_FLOAT_EQ(sceneWithLight({{"type", "spot"}, {"spot", json::object()}}).lights[0].outerConeAngle,
+                    kPi / 4)
         << "the glTF default outer cone";
 }
 
@@ -362,7 +375,8 @@ TEST(GltfLoader, LoadsBinaryGlb) {
 TEST(GltfLoader, LoadsBuffersFromDataUris) {
     GltfBuilder gltf = test::triangleScene();
     TempFolder folder;
-    const Scene scene = loadGltf(gltf.writeGltf(folder, "scene", GltfBuilder::BufferStorage::DataUri).string());
+    const Scene scene =
+        loadGltf(gltf.writeGltf(folder, "scene", GltfBuilder::BufferStorage::DataUri).string());
     ASSERT_EQ(scene.triangleCount(), 1u);
     expectNear(cornerOf(scene, 0, 2), {0, 1, 0});
     EXPECT_FALSE(std::filesystem::exists(folder.path / "scene.bin"));
@@ -372,7 +386,8 @@ TEST(GltfLoader, DecodesPercentEncodedUris) {
     GltfBuilder gltf = test::triangleScene();
     TempFolder folder;
     folder.write("my mesh+data.bin", gltf.bin);
-    gltf.document["buffers"] = json::array({{{"uri", "my%20mesh%2Bdata.bin"}, {"byteLength", gltf.bin.size()}}});
+    gltf.document["buffers"] =
+        json::array({{{"uri", "my%20mesh%2Bdata.bin"}, {"byteLength", gltf.bin.size()}}});
     const std::string path = folder.write("scene.gltf", gltf.document.dump()).string();
     EXPECT_EQ(loadGltf(path).triangleCount(), 1u);
 }
@@ -382,8 +397,9 @@ GltfBuilder texturedTriangle(const std::string& uri) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["images"] = json::array({{{"uri", uri}}});
     gltf.document["textures"] = json::array({{{"source", 0}}});
-    gltf.document["materials"] = json::array(
-        {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {1, 0, 0, 1}}}}}});
+    gltf.document["materials"] =
+        json::array({{{"pbrMetallicRoughness",
+                       {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {1, 0, 0, 1}}}}}});
     gltf.document["meshes"][0]["primitives"][0]["material"] = 0;
     return gltf;
 }
@@ -409,6 +425,18 @@ TEST(GltfLoader, ReducesSixteenBitPngTo8BitRgba) {
     const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
     ASSERT_EQ(scene.textures.size(), 1u);
     EXPECT_EQ(scene.textures[0].rgba8, (std::vector<uint8_t>{255, 128, 0, 255}));
+}
+
+TEST(GltfLoader, DecodesTextureEmbeddedInGlb) {
+    GltfBuilder gltf = texturedTriangle("unused");
+    const std::string png = test::encodePng(1, 1, 4, 8, {1, 2, 3, 4});
+    gltf.document["images"][0] = {{"bufferView", gltf.addBufferView(png.data(), png.size())},
+                                  {"mimeType", "image/png"}};
+    TempFolder folder;
+    const Scene scene = loadGltf(gltf.writeGlb(folder, "scene").string());
+    ASSERT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.textures[0].rgba8, (std::vector<uint8_t>{1, 2, 3, 4}));
 }
 
 TEST(GltfLoader, MissingTextureWarnsAndFallsBackToTheFactor) {

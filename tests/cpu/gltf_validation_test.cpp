@@ -62,7 +62,8 @@ TEST(GltfValidation, SceneFileOverTheSizeLimitIsRefused) {
 
 TEST(GltfValidation, BrokenJsonReportsTheParserMessage) {
     TempFolder folder;
-    const std::string path = folder.write("broken.gltf", R"({"asset": {"version": "2.0"}, "nodes": [)").string();
+    const std::string path =
+        folder.write("broken.gltf", R"({"asset": {"version": "2.0"}, "nodes": [)").string();
     expectRefused(path, "not a valid glTF file: ");
     expectRefused(path, "parse error at line 1, column 41");
 }
@@ -82,7 +83,8 @@ TEST(GltfValidation, BufferViewRunningPastItsBufferIsRefused) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["bufferViews"][1]["byteLength"] = 4096;
     TempFolder folder;
-    expectRefused(gltf.writeGlb(folder, "scene").string(), "bufferViews[1]: bytes 36 to 4132 run past the end of buffer 0");
+    expectRefused(gltf.writeGlb(folder, "scene").string(),
+                  "bufferViews[1]: bytes 36 to 4132 run past the end of buffer 0");
 }
 
 TEST(GltfValidation, BufferFileShorterThanItsByteLengthIsRefused) {
@@ -113,7 +115,8 @@ TEST(GltfValidation, PrimitiveWithoutPositionIsRefused) {
 
 TEST(GltfValidation, AttributeOfAComponentTypeGltfForbidsIsRefused) {
     GltfBuilder gltf = test::triangleScene();
-    const int positions = gltf.addAccessor(std::vector<uint32_t>(9, 0), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "VEC3", 3);
+    const int positions =
+        gltf.addAccessor(std::vector<uint32_t>(9, 0), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "VEC3", 3);
     gltf.document["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = positions;
     expectRefused(gltf, "VEC3 of UNSIGNED_INT, which glTF does not allow for POSITION");
 }
@@ -139,7 +142,8 @@ TEST(GltfValidation, NodeThatIsItsOwnChildIsRefused) {
 
 TEST(GltfValidation, NodeWithTwoParentsIsRefused) {
     GltfBuilder gltf = test::triangleScene();
-    gltf.document["scenes"][0]["nodes"] = {gltf.addNode({{"children", {0}}}), gltf.addNode({{"children", {0}}})};
+    gltf.document["scenes"][0]["nodes"] = {gltf.addNode({{"children", {0}}}),
+                                           gltf.addNode({{"children", {0}}})};
     expectRefused(gltf, "nodes[2].children[0]: node 0 already has parent node 1");
 }
 
@@ -182,14 +186,16 @@ TEST(GltfValidation, MalformedNodeTransformIsRefused) {
 
 TEST(GltfValidation, CameraFieldOfViewOutsideZeroToPiIsRefused) {
     GltfBuilder gltf = test::triangleScene();
-    gltf.document["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 4.0}, {"znear", 0.1}}}}});
+    gltf.document["cameras"] =
+        json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 4.0}, {"znear", 0.1}}}}});
     gltf.document["nodes"][0]["camera"] = 0;
     expectRefused(gltf, "cameras[0].perspective.yfov: 4 is not an angle in (0, π)");
 }
 
 TEST(GltfValidation, CameraWithZeroNearPlaneIsRefused) {
     GltfBuilder gltf = test::triangleScene();
-    gltf.document["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.0}}}}});
+    gltf.document["cameras"] =
+        json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.0}}}}});
     expectRefused(gltf, "cameras[0].perspective.znear");
 }
 
@@ -202,8 +208,9 @@ TEST(GltfValidation, NegativeLightIntensityIsRefused) {
 
 TEST(GltfValidation, SpotConeWiderThanAHemisphereIsRefused) {
     GltfBuilder gltf = test::triangleScene();
-    gltf.document["extensions"] = {{"KHR_lights_punctual",
-                                    {{"lights", json::array({{{"type", "spot"}, {"spot", {{"outerConeAngle", 2.0}}}}})}}}};
+    gltf.document["extensions"] = {
+        {"KHR_lights_punctual",
+         {{"lights", json::array({{{"type", "spot"}, {"spot", {{"outerConeAngle", 2.0}}}}})}}}};
     expectRefused(gltf, "lights[0].spot.outerConeAngle");
 }
 
@@ -262,7 +269,8 @@ TEST(GltfValidation, GlbImageBufferViewPastItsBufferIsRefused) {
 // ---- The file policy: buffer and image URIs stay inside the scene's folder.
 
 // The triangle scene whose buffer URI is `uri` (the .bin is written as scene.bin all the same).
-std::string sceneWithBufferUri(const TempFolder& folder, const std::string& uri, const std::string& subfolder = "") {
+std::string sceneWithBufferUri(const TempFolder& folder, const std::string& uri,
+                               const std::string& subfolder = "") {
     GltfBuilder gltf = test::triangleScene();
     folder.write(subfolder + "scene.bin", gltf.bin);
     gltf.document["buffers"] = json::array({{{"uri", uri}, {"byteLength", gltf.bin.size()}}});
@@ -271,13 +279,15 @@ std::string sceneWithBufferUri(const TempFolder& folder, const std::string& uri,
 
 TEST(GltfFilePolicy, AbsoluteUriIsRefused) {
     TempFolder folder;
-    expectRefused(sceneWithBufferUri(folder, "/etc/hostname"), "buffers[0].uri: '/etc/hostname' is an absolute path");
+    expectRefused(sceneWithBufferUri(folder, "/etc/hostname"),
+                  "buffers[0].uri: '/etc/hostname' is an absolute path");
 }
 
 TEST(GltfFilePolicy, UriEscapingTheFolderIsRefused) {
     TempFolder folder;
     folder.write("x.bin", std::string(64, '\0'));  // the target exists: the refusal is not "file not found"
-    expectRefused(sceneWithBufferUri(folder, "../../x.bin", "a/b/"), "'../../x.bin' leaves the allowed folder");
+    expectRefused(sceneWithBufferUri(folder, "../../x.bin", "a/b/"),
+                  "'../../x.bin' leaves the allowed folder");
     expectRefused(sceneWithBufferUri(folder, "%2E%2E/%2E%2E/x.bin", "a/b/"), "leaves the allowed folder");
 }
 
@@ -303,7 +313,8 @@ TEST(GltfFilePolicy, UriNamingAFifoIsRefusedWithoutBlocking) {
 
 TEST(GltfFilePolicy, UriWithAnotherSchemeIsRefused) {
     TempFolder folder;
-    expectRefused(sceneWithBufferUri(folder, "file:///etc/hostname"), "is not a relative path or a data: URI");
+    expectRefused(sceneWithBufferUri(folder, "file:///etc/hostname"),
+                  "is not a relative path or a data: URI");
 }
 
 TEST(GltfFilePolicy, BufferOverTheSizeLimitIsRefused) {
@@ -319,7 +330,8 @@ TEST(GltfFilePolicy, AllowedRootCanWidenTheFolder) {
     TempFolder folder;
     GltfBuilder gltf = test::triangleScene();
     folder.write("shared/mesh.bin", gltf.bin);
-    gltf.document["buffers"] = json::array({{{"uri", "../shared/mesh.bin"}, {"byteLength", gltf.bin.size()}}});
+    gltf.document["buffers"] =
+        json::array({{{"uri", "../shared/mesh.bin"}, {"byteLength", gltf.bin.size()}}});
     const std::string path = folder.write("scenes/scene.gltf", gltf.document.dump()).string();
     expectRefused(path, "leaves the allowed folder");
     LoadOptions options;
@@ -331,13 +343,15 @@ TEST(GltfFilePolicy, ImageOutsideTheFolderIsNotReadButWarned) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["images"] = json::array({{{"uri", "/etc/hostname"}}});
     gltf.document["textures"] = json::array({{{"source", 0}}});
-    gltf.document["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    gltf.document["materials"] =
+        json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
     gltf.document["meshes"][0]["primitives"][0]["material"] = 0;
     TempFolder folder;
     const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
     EXPECT_TRUE(scene.textures.empty());
     ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("'/etc/hostname' is an absolute path"), std::string::npos) << scene.warnings[0];
+    EXPECT_NE(scene.warnings[0].find("'/etc/hostname' is an absolute path"), std::string::npos)
+        << scene.warnings[0];
 }
 
 }  // namespace
