@@ -251,6 +251,48 @@ TEST(PathTracer, PunctualLightsOverLambertianPlaneFollowTheirFalloff) {
     }
 }
 
+TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
+    // A 2 × 1 texture (sRGB red 255 | green 128) on a plane with u = (x + 1)/2, lit straight down by a
+    // directional light of E = π, so radiance = base colour. The camera sees u ∈ [¼, ¾], between the
+    // two texel centres, where bilinear filtering blends the decoded colours linearly.
+    Scene scene;
+    Texture texture;
+    texture.width = 2;
+    texture.height = 1;
+    texture.rgba8 = {255, 0, 0, 255, 0, 128, 0, 255};
+    scene.textures.push_back(texture);
+    Material material = lambertian(glm::vec3(1.0f, 0.5f, 1.0f));
+    material.baseColorTexture = 0;
+    const uint32_t plane = addMaterial(scene, material);
+    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
+        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
+    }
+    scene.indices = {0, 2, 1, 0, 3, 2};
+    scene.triangleMaterials = {plane, plane};
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    sun.intensity = kPi;
+    scene.lights.push_back(sun);
+    Camera camera;
+    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
+    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
+    camera.yfov = 2.0f * std::atan(0.5f);       // sees x, z ∈ [−½, ½]
+    scene.cameras.push_back(camera);
+    const PathTracer tracer = createPathTracer(scene);
+    const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 2));
+
+    const double green128 = std::pow((128.0 / 255.0 + 0.055) / 1.055, 2.4);  // IEC 61966-2-1
+    for (uint32_t x = 0; x < 16; ++x) {
+        const double t = (double(x) + 0.5) / 16.0;  // from the red texel's centre to the green one's
+        const float* pixel = result.image.pixel(x, 7);
+        EXPECT_NEAR(pixel[0], 1.0 - t, 0.01 * (1.0 - t) + 1e-3) << "x " << x;
+        EXPECT_NEAR(pixel[1], 0.5 * green128 * t, 0.01 * 0.5 * green128 * t + 1e-3) << "x " << x;
+        EXPECT_NEAR(pixel[2], 0.0, 1e-6) << "x " << x;
+    }
+}
+
 TEST(PathTracer, RendersWithDifferentSeedsAgreeWithinTheirEstimatedNoise) {
     const Scene scene = makeTestRoom();
     const PathTracer tracer = createPathTracer(scene);
