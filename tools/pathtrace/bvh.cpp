@@ -203,7 +203,9 @@ std::optional<RayHit> intersect(const PreparedRay& r, const TrianglePositions& t
 // Slab test; the far distance is scaled by 1 + 2γ₃ so that rounding never culls a box the ray
 // touches (Ize 2013, "Robust BVH Ray Traversal").
 bool hitsBox(const PreparedRay& r, const BvhNode& node, float tMax, float& tEnter) {
-    constexpr float kRobustScale = 1.0f + 2.0f * 3.0f * FLT_EPSILON * 0.5f / (1.0f - 3.0f * FLT_EPSILON * 0.5f);
+    constexpr float kUnitRoundoff = 0.5f * FLT_EPSILON;
+    constexpr float kGamma3 = 3.0f * kUnitRoundoff / (1.0f - 3.0f * kUnitRoundoff);
+    constexpr float kRobustScale = 1.0f + 2.0f * kGamma3;
     const glm::vec3 t0 = (node.min - r.origin) * r.inverseDirection;
     const glm::vec3 t1 = (node.max - r.origin) * r.inverseDirection;
     const glm::vec3 tNear = glm::min(t0, t1), tFar = glm::max(t0, t1);
