@@ -4,6 +4,7 @@
 #define VCT_GPU_TYPES_H
 
 #include "cpp_glsl.h"
+#include "voxel_grid.h"
 
 VCT_SHARED_BEGIN
 
@@ -49,7 +50,28 @@ struct FrameConstants {
     uvec4 counts;         // x lights, y shadow views, z SHOW_* / USE_* flags, w unused
     vec4 shading;         // x ambient factor, y shadow normal offset (texels), z PCF radius (texels), w unused
     vec4 renderSize;      // width, height, 1/width, 1/height of the render target
+
+    // Voxel cone tracing (Crassin et al. 2011). Distances are in voxels of the finest level.
+    VoxelGridParams grid;
+    vec4 cone;        // x tan(diffuse half-aperture), y step (fraction of the cone diameter),
+                      // z max distance, w start offset along the normal
+    vec4 coneWeights; // x AO distance falloff, y opacity at which a cone stops, z centre cone weight,
+                      // w radiance scale (the volume stores radiance × scale to stay inside float16)
+    uvec4 coneCounts; // x diffuse cones, y 1 = skip empty space with coarse mips, z debug view (DEBUG_*),
+                      // w mip level the voxel debug views show
+    mat4 inverseViewProjection;
 };
+
+// What the shading pass shows instead of light (FrameConstants.coneCounts.z), for understanding.
+const uint DEBUG_NONE = 0u;
+const uint DEBUG_BASE_COLOR = 1u;
+const uint DEBUG_NORMAL = 2u;
+const uint DEBUG_DEPTH = 3u;
+const uint DEBUG_AMBIENT_OCCLUSION = 4u;
+const uint DEBUG_VOXEL_ALBEDO = 5u;
+const uint DEBUG_VOXEL_NORMAL = 6u;
+const uint DEBUG_VOXEL_RADIANCE = 7u;
+
 
 VCT_SHARED_END
 

@@ -12,14 +12,54 @@ layout(set = 0, binding = 5) uniform sampler2DArrayShadow localShadowMaps;
 layout(set = 0, binding = 6) uniform sampler2D gPosition;
 layout(set = 0, binding = 7) uniform sampler2D gNormal;
 layout(set = 0, binding = 8) uniform sampler2D gBaseColor;
+layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
+layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 
+#include "cone_tracing.glsl"
+#include "debug_views.glsl"
 #include "direct_light.glsl"
 
 layout(location = 0) out vec4 outRadiance;
 
+// Indirect light gathered by cones, split like the direct light into diffuse and specular parts.
+// The split of reflected energy between the two lobes uses the GGX directional albedo.
+vec3 indirectLight(SurfacePoint surface, uint flags) {
+    bool wantDiffuse = (flags & SHOW_INDIRECT_DIFFUSE) != 0u;
+    bool wantAmbient = (flags & SHOW_AMBIENT_OCCLUSION) != 0u && frame.shading.x > 0.0f;
+    bool wantSpecular = (flags & SHOW_INDIRECT_SPECULAR) != 0u;
+    if (!wantDiffuse && !wantAmbient && !wantSpecular) return vec3(0.0f);
+
+    float NdotV = max(dot(surface.normal, surface.toViewer), 1e-4f);
+    vec2 lobe = environmentBrdf(clamp(surface.roughness, MIN_ROUGHNESS, 1.0f), NdotV);
+    float dielectricSpecular = surface.specularWeight * (DIELECTRIC_F0 * lobe.x + lobe.y);
+    vec3 specularAlbedo = mix(vec3(dielectricSpecular), surface.baseColor * lobe.x + lobe.y, surface.metallic);
+    vec3 diffuseAlbedo = (1.0f - surface.metallic) * surface.baseColor * (1.0f - dielectricSpecular);
+    // Cones start a little off the surface so they do not see the surface's own voxels.
+    vec3 origin = surface.position + surface.normal * (frame.cone.w * frame.grid.originVoxelSize.w);
+
+    vec3 radiance = vec3(0.0f);
+    if (wantDiffuse || wantAmbient) {
+        vec4 gathered = traceDiffuseCones(origin, surface.normal);
+        if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
+        if (wantAmbient) radiance += frame.shading.x * diffuseAlbedo * (1.0f - gathered.a);
+    }
+    // Skip the specular cone where the material reflects (almost) nothing specularly.
+    if (wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
+        vec3 reflected = reflect(-surface.toViewer, surface.normal);
+        float tanHalf = specularConeTanHalfAperture(ggxAlpha(surface.roughness));
+        radiance += specularAlbedo * traceCone(origin, reflected, tanHalf).radiance;
+    }
+    return radiance;
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 positionMaterial = texelFetch(gPosition, pixel, 0);
+    if (frame.coneCounts.z != DEBUG_NONE) {
+        outRadiance = vec4(debugView(pixel, positionMaterial), 1.0f);
+        return;
+    }
     if (positionMaterial.w < 0.5f) {
         outRadiance = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // no environment light: nothing behind the scene
         return;
@@ -39,5 +79,6 @@ void main() {
     uint flags = frame.counts.z;
     vec3 radiance = directLight(surface, flags);
     if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f) radiance += material.emission.rgb;
+    radiance += indirectLight(surface, flags);
     outRadiance = vec4(radiance, 1.0f);
 }

@@ -1,11 +1,14 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
+#include "render/voxel_grid_fit.h"
 
 namespace vct {
 
@@ -47,11 +50,17 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
       sceneGpu_(context, scene),
+      grid_(fitVoxelGrid(scene.bounds(), settings.voxelResolution)),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
+      injectPass_(context, settings.voxelResolution),
+      mipsPass_(context),
       gbufferPass_(context, sceneGpu_, settings.width * settings.supersample, settings.height * settings.supersample),
       shadePass_(context, settings.width * settings.supersample, settings.height * settings.supersample),
       resolvePass_(context, settings.width, settings.height, settings.supersample),
       timer_(context) {
+    for (const Material& material : scene.materials)
+        brightestEmission_ = std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
+    voxelizePass_ = std::make_unique<VoxelizePass>(context, scene, sceneGpu_, grid_);
     setLights(lights_);
 }
 
@@ -71,7 +80,14 @@ void Renderer::setLights(const std::vector<Light>& lights) {
         if (shadowPass_) vkDeviceWaitIdle(context_.device);
         shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_);
     }
+    // The brightest emitter stands in for the scene's materials in the storage scale.
+    Scene emitters;
+    Material brightest;
+    brightest.emission = glm::vec3(brightestEmission_);
+    emitters.materials.push_back(brightest);
+    radianceScale_ = radianceStorageScale(lights_, emitters, grid_.originVoxelSize.w);
     shadowsDirty_ = true;
+    radianceDirty_ = true;
 }
 
 void Renderer::setShadingSettings(const RenderSettings& settings) {
@@ -82,6 +98,17 @@ void Renderer::setShadingSettings(const RenderSettings& settings) {
     settings_.shadowNormalOffset = settings.shadowNormalOffset;
     settings_.pcfRadius = settings.pcfRadius;
     settings_.shadowSlopeBias = settings.shadowSlopeBias;
+    settings_.diffuseConeCount = settings.diffuseConeCount;
+    settings_.diffuseConeAperture = settings.diffuseConeAperture;
+    settings_.diffuseCentreWeight = settings.diffuseCentreWeight;
+    settings_.coneStep = settings.coneStep;
+    settings_.coneMaxDistance = settings.coneMaxDistance;
+    settings_.coneStartOffset = settings.coneStartOffset;
+    settings_.coneStopOpacity = settings.coneStopOpacity;
+    settings_.aoFalloff = settings.aoFalloff;
+    settings_.skipEmptySpace = settings.skipEmptySpace;
+    settings_.debugView = settings.debugView;
+    settings_.debugVoxelMip = settings.debugVoxelMip;
     if (shadowChange) shadowsDirty_ = true;
 }
 
@@ -89,11 +116,20 @@ void Renderer::writeFrameConstants() {
     const uint32_t width = gbufferPass_.width, height = gbufferPass_.height;
     glsl::FrameConstants constants{};
     constants.viewProjection = cameraMatrices(camera_, float(width) / float(height), sceneBounds_).viewProjection;
+    constants.inverseViewProjection = glm::inverse(constants.viewProjection);
     constants.cameraPosition = glm::vec4(camera_.position, 1.0f);
     constants.counts = glm::uvec4(uint32_t(shadowLayout_.lights.size()), uint32_t(shadowLayout_.views.size()),
                                   componentFlags(settings_), 0u);
     constants.shading = glm::vec4(settings_.ambientFactor, settings_.shadowNormalOffset, settings_.pcfRadius, 0.0f);
     constants.renderSize = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    const float resolution = float(grid_.resolution.x);
+    constants.grid = grid_;
+    constants.cone = glm::vec4(std::tan(glm::radians(0.5f * settings_.diffuseConeAperture)), settings_.coneStep,
+                               settings_.coneMaxDistance * resolution, settings_.coneStartOffset);
+    constants.coneWeights = glm::vec4(settings_.aoFalloff / resolution, settings_.coneStopOpacity,
+                                      settings_.diffuseCentreWeight, radianceScale_);
+    constants.coneCounts = glm::uvec4(settings_.diffuseConeCount, settings_.skipEmptySpace ? 1u : 0u,
+                                      uint32_t(settings_.debugView), settings_.debugVoxelMip);
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
 }
 
@@ -102,6 +138,12 @@ FrameStats Renderer::renderFrame() {
     FrameStats stats;
     writeFrameConstants();
     const bool drawShadows = shadowsDirty_;
+    const Components shown = effectiveComponents(settings_);
+    const bool needsVoxels = shown.indirectDiffuse || shown.indirectSpecular ||
+                             (shown.ambientOcclusion && settings_.ambientFactor > 0.0f) ||
+                             settings_.debugView >= DebugView::AmbientOcclusion;
+    const bool voxelize = needsVoxels && voxelsDirty_;
+    const bool inject = needsVoxels && (radianceDirty_ || voxelize);
     submitAndWait(context_, [&](VkCommandBuffer commands) {
         timer_.reset(commands);
         if (drawShadows) {
@@ -109,20 +151,48 @@ FrameStats Renderer::renderFrame() {
             shadowPass_->record(commands, sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_);
             timer_.end(commands);
         }
+        if (voxelize) {
+            timer_.begin(commands, "voxelize");
+            voxelizePass_->record(commands, sceneGpu_);
+            timer_.end(commands);
+        }
+        if (inject) {
+            timer_.begin(commands, "inject");
+            injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
+                               *shadowPass_, *voxelizePass_);
+            timer_.end(commands);
+            timer_.begin(commands, "mips");
+            mipsPass_.record(commands, injectPass_.radiance);
+            timer_.end(commands);
+        } else if (!injectPass_.initialized) {
+            // Nothing injected yet: the shading pass still binds the volume, so give it a layout.
+            imageBarrier(commands, injectPass_.radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+            injectPass_.initialized = true;
+        }
         timer_.begin(commands, "gbuffer");
         gbufferPass_.record(commands, sceneGpu_, frameConstants_.buffer);
         timer_.end(commands);
         timer_.begin(commands, "shade");
         const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_.materials.buffer, lightsBuffer_.buffer,
                                  shadowViewsBuffer_.buffer};
-        shadePass_.record(commands, inputs, gbufferPass_, *shadowPass_);
+        shadePass_.record(commands, inputs, gbufferPass_, *shadowPass_, injectPass_.radiance,
+                          voxelizePass_->albedoOpacity, voxelizePass_->normal);
         timer_.end(commands);
         timer_.begin(commands, "resolve");
         resolvePass_.record(commands, shadePass_.radiance);
         timer_.end(commands);
     });
     shadowsDirty_ = false;
+    if (voxelize) voxelsDirty_ = false;
+    if (inject) radianceDirty_ = false;
     if (!drawShadows) stats.skipped.push_back("shadow");
+    if (!voxelize) stats.skipped.push_back("voxelize");
+    if (!inject) {
+        stats.skipped.push_back("inject");
+        stats.skipped.push_back("mips");
+    }
     stats.passes = timer_.results();
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
@@ -152,6 +222,25 @@ Image Renderer::readImage() {
     for (size_t i = 0; i < size_t(width) * height; ++i)
         for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = rgba[i * 4 + c];
     return image;
+}
+
+}  // namespace vct
+
+namespace vct {
+
+uint64_t Renderer::deviceMemoryBytes() const {
+    uint64_t bytes = 0;
+    for (const GpuImage* image : std::initializer_list<const GpuImage*>{
+             &gbufferPass_.position, &gbufferPass_.normal, &gbufferPass_.baseColor, &gbufferPass_.depth,
+          &shadePass_.radiance, &resolvePass_.resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps,
+          &voxelizePass_->albedoOpacity, &voxelizePass_->normal, &voxelizePass_->emission, &injectPass_.radiance})
+        bytes += image->memorySize;
+    for (const GpuImage& texture : sceneGpu_.textures) bytes += texture.memorySize;
+    for (const Buffer* buffer : std::initializer_list<const Buffer*>{&sceneGpu_.vertices, &sceneGpu_.indices, &sceneGpu_.triangleMaterials,
+                                 &sceneGpu_.materials, &voxelizePass_->workItems})
+        bytes += buffer->size;
+    for (const Buffer& accumulation : voxelizePass_->accumulation) bytes += accumulation.size;
+    return bytes;
 }
 
 }  // namespace vct

@@ -1,8 +1,12 @@
 // The frame: orders the passes, decides which can be skipped, and hands back the image.
 //
-//   shadow maps → G-buffer → full-screen shading → resolve (supersample average)
+//   shadow maps → voxelize → inject light → mips → G-buffer → full-screen shading (direct light
+//   and cone tracing) → resolve (supersample average)
 //
-// Shadow maps are redrawn only when a light or the geometry changed.
+// What did not change is not redone: shadow maps are redrawn when a light moved; the scene is
+// voxelized once per geometry; light is re-injected (and the mips rebuilt) only when a light
+// changed or the voxels were rebuilt; and none of the voxel passes run while the image shows no
+// indirect light.
 #pragma once
 
 #include <memory>
@@ -14,11 +18,14 @@
 #include "gpu/timing.h"
 #include "io/image_io.h"
 #include "render/gbuffer_pass.h"
+#include "render/inject_pass.h"
+#include "render/mips_pass.h"
 #include "render/resolve_pass.h"
 #include "render/scene_gpu.h"
 #include "render/settings.h"
 #include "render/shade_pass.h"
 #include "render/shadow_pass.h"
+#include "render/voxelize_pass.h"
 #include "scene/scene.h"
 
 namespace vct {
@@ -41,13 +48,23 @@ public:
     void setLights(const std::vector<Light>& lights);
     const std::vector<Light>& lights() const { return lights_; }
     const RenderSettings& settings() const { return settings_; }
-    // Changes that keep the image size (component toggles, ambient, mode).
+    // Changes that need no new images or voxels: mode, components, ambient, shadow filtering,
+    // cone parameters, debug views. (Image size, voxel and shadow-map resolution need a new Renderer.)
     void setShadingSettings(const RenderSettings& settings);
 
     // Records, submits and waits for one frame.
     FrameStats renderFrame();
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
+
+    const glsl::VoxelGridParams& voxelGrid() const { return grid_; }
+    const VoxelizePass& voxels() const { return *voxelizePass_; }
+    const GpuImage& voxelRadiance() const { return injectPass_.radiance; }
+    // The last frame's resolved image (RGBA32F, width × height, GENERAL layout), e.g. for a viewer
+    // to tone-map onto its swapchain.
+    const GpuImage& output() const { return resolvePass_.resolved; }
+    // Device memory held by the renderer's images and buffers, in bytes.
+    uint64_t deviceMemoryBytes() const;
 
 private:
     void writeFrameConstants();
@@ -58,6 +75,11 @@ private:
     Camera camera_;
     std::vector<Light> lights_;
     bool shadowsDirty_ = true;
+    bool voxelsDirty_ = true;
+    bool radianceDirty_ = true;
+    float brightestEmission_ = 0.0f;
+    float radianceScale_ = 1.0f;
+    glsl::VoxelGridParams grid_;
 
     SceneGpu sceneGpu_;
     ShadowLayout shadowLayout_;
@@ -65,6 +87,9 @@ private:
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<VoxelizePass> voxelizePass_;
+    InjectPass injectPass_;
+    MipsPass mipsPass_;
     GBufferPass gbufferPass_;
     ShadePass shadePass_;
     ResolvePass resolvePass_;

@@ -16,6 +16,18 @@ enum class RenderMode { Full, Direct, Indirect };
 std::optional<RenderMode> parseRenderMode(const std::string& name);
 const char* renderModeName(RenderMode mode);
 
+// Views for understanding, shown instead of light (values as in shaders_glsl/gpu_types.h).
+enum class DebugView : uint32_t {
+    None = 0,
+    BaseColor = 1,
+    Normal = 2,
+    Depth = 3,
+    AmbientOcclusion = 4,
+    VoxelAlbedo = 5,
+    VoxelNormal = 6,
+    VoxelRadiance = 7,
+};
+
 struct Components {
     bool directDiffuse = true;
     bool directSpecular = true;
@@ -41,6 +53,21 @@ struct RenderSettings {
     float shadowNormalOffset = 1.5f;     // texels
     float shadowSlopeBias = 2.0f;
     float pcfRadius = 2.0f;              // texels covered by the 5×5 kernel on each side
+
+    // Voxel cone tracing.
+    uint32_t voxelResolution = 128;      // voxels per side, a power of two from 32 to 512
+    uint32_t diffuseConeCount = 6;       // one along the normal, the rest in a ring around it
+    float diffuseConeAperture = 60.0f;   // full angle of each diffuse cone, degrees
+    float diffuseCentreWeight = 0.25f;   // the ring shares the rest equally (0.15 each for 6 cones)
+    float coneStep = 0.5f;               // step along a cone, as a fraction of its diameter there
+    float coneMaxDistance = 1.0f;        // longest cone, as a fraction of the grid's side
+    float coneStartOffset = 1.5f;        // voxels between the surface and a cone's apex
+    float coneStopOpacity = 0.95f;       // a cone stops once this opaque
+    float aoFalloff = 8.0f;              // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
+    bool skipEmptySpace = true;          // march through empty space with the coarse mips
+
+    DebugView debugView = DebugView::None;
+    uint32_t debugVoxelMip = 0;          // the mip level the voxel views show
 };
 
 // The components a mode shows (toggles switched off stay off).

@@ -13,6 +13,11 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
     desc.debugName = "radiance";
     radiance = GpuImage(context, desc);
     pointSampler = Sampler(context, nearestClampSampler());
+    VkSamplerCreateInfo volumeInfo = linearClampSampler();
+    volumeInfo.addressModeU = volumeInfo.addressModeV = volumeInfo.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    volumeInfo.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    volumeSampler = Sampler(context, volumeInfo);
 
     const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -25,7 +30,10 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
                   {5, sampled, fragment},
                   {6, sampled, fragment},
                   {7, sampled, fragment},
-                  {8, sampled, fragment}});
+                  {8, sampled, fragment},
+                  {9, sampled, fragment},
+                  {10, sampled, fragment},
+                  {11, sampled, fragment}});
     VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
     GraphicsPipelineDesc pipelineDesc;
     pipelineDesc.vertexShader = "fullscreen.vert";
@@ -35,7 +43,8 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
 }
 
 void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
-                       const ShadowPass& shadows) {
+                       const ShadowPass& shadows, const GpuImage& voxelRadiance, const GpuImage& voxelAlbedo,
+                       const GpuImage& voxelNormal) {
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
@@ -61,6 +70,9 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
         .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
         .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
         .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
+        .sampledImage(9, voxelRadiance.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(10, voxelAlbedo.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(11, voxelNormal.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
     const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, {width, height}};

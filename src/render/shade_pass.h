@@ -21,11 +21,13 @@ struct ShadePass {
 
     // Leaves `radiance` in SHADER_READ_ONLY_OPTIMAL.
     void record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
-                const ShadowPass& shadows);
+                const ShadowPass& shadows, const GpuImage& voxelRadiance, const GpuImage& voxelAlbedo,
+                const GpuImage& voxelNormal);
 
     uint32_t width, height;
     GpuImage radiance;  // RGBA32F
     Sampler pointSampler;
+    Sampler volumeSampler;  // trilinear between mips, transparent black outside the grid
     Pipeline pipeline;
 
 private:

@@ -1,0 +1,113 @@
+// Cone tracing through the pre-filtered radiance volume (Crassin et al. 2011, section 3).
+// Requires: frame (FrameConstants) and voxelRadiance (sampler3D with the mip chain; rgb is
+// radiance × scale premultiplied by opacity, a is opacity).
+#ifndef VCT_CONE_TRACING_GLSL
+#define VCT_CONE_TRACING_GLSL
+
+#include "voxel_grid.h"
+
+struct ConeResult {
+    vec3 radiance;    // gathered radiance, scene units
+    float occlusion;  // 0..1, with the distance falloff applied
+};
+
+// Marches one cone from `origin` (world) along unit `direction`. The sample footprint grows with
+// distance: diameter = 2·tan(half-aperture)·distance, sampled at mip log2(diameter). Samples are
+// composited front to back; each step's opacity is corrected for the step length so that the
+// result does not depend on the step size (1 − (1 − α)^(step / diameter)).
+ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
+    VoxelGridParams grid = frame.grid;
+    float resolution = float(grid.resolution.x);
+    float maxLod = float(grid.resolution.y - 1u);
+    vec3 start = worldToGrid(grid, origin);
+    float stepFraction = frame.cone.y;
+    float maxDistance = frame.cone.z;
+    float stopOpacity = frame.coneWeights.y;
+    float falloff = frame.coneWeights.x;
+    bool skipEmpty = frame.coneCounts.y != 0u;
+
+    vec3 color = vec3(0.0f);
+    float alpha = 0.0f;
+    float occlusion = 0.0f;
+    float distance = 0.5f;  // the origin is already offset from the surface
+    for (int i = 0; i < 512 && distance < maxDistance && alpha < stopOpacity; ++i) {
+        float diameter = max(1.0f, 2.0f * tanHalfAperture * distance);
+        float lod = min(log2(diameter), maxLod);
+        vec3 position = start + direction * distance;
+        if (any(lessThan(position, vec3(0.0f))) || any(greaterThan(position, vec3(resolution)))) break;
+        vec3 uvw = position / resolution;
+        float stepLength = max(stepFraction * diameter, 0.25f);
+
+        // Empty space: when a level two steps coarser holds nothing here, no finer level does
+        // either (its texels are averages), so the cone can take a coarse-sized step.
+        if (skipEmpty && lod + 2.0f <= maxLod) {
+            float coarseOpacity = textureLod(voxelRadiance, uvw, lod + 2.0f).a;
+            if (coarseOpacity <= 0.0f) {
+                distance += max(stepLength, 2.0f * diameter);
+                continue;
+            }
+        }
+
+        vec4 voxel = textureLod(voxelRadiance, uvw, lod);
+        if (voxel.a > 0.0f) {
+            float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / diameter);
+            vec3 correctedColor = voxel.rgb * (correctedAlpha / voxel.a);
+            color += (1.0f - alpha) * correctedColor;
+            occlusion += (1.0f - occlusion) * correctedAlpha / (1.0f + falloff * distance);
+            alpha += (1.0f - alpha) * correctedAlpha;
+        }
+        distance += stepLength;
+    }
+    ConeResult result;
+    result.radiance = color / frame.coneWeights.w;
+    result.occlusion = clamp(occlusion, 0.0f, 1.0f);
+    return result;
+}
+
+// Any unit vector perpendicular to n.
+vec3 perpendicular(vec3 n) {
+    vec3 helper = abs(n.x) < 0.9f ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f);
+    return normalize(cross(n, helper));
+}
+
+// Indirect diffuse light: one cone along the normal and the others in a ring around it, at
+// twice the half-aperture from the normal (60° for the default 60° cones), so neighbouring
+// cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
+// irradiance is π·Σ wᵢ·Lᵢ. Returns the weighted radiance (rgb) and the weighted occlusion (a).
+vec4 traceDiffuseCones(vec3 origin, vec3 normal) {
+    uint count = max(frame.coneCounts.x, 1u);
+    float tanHalf = frame.cone.x;
+    float centreWeight = count == 1u ? 1.0f : frame.coneWeights.z;
+    float sideWeight = count == 1u ? 0.0f : (1.0f - centreWeight) / float(count - 1u);
+    float ringAngle = min(2.0f * atan(tanHalf), 1.4f);
+    vec3 tangent = perpendicular(normal);
+    vec3 bitangent = cross(normal, tangent);
+
+    ConeResult centre = traceCone(origin, normal, tanHalf);
+    vec3 radiance = centreWeight * centre.radiance;
+    float occlusion = centreWeight * centre.occlusion;
+    for (uint i = 1u; i < count; ++i) {
+        float azimuth = 6.28318530718f * float(i - 1u) / float(count - 1u);
+        vec3 around = cos(azimuth) * tangent + sin(azimuth) * bitangent;
+        vec3 direction = normalize(cos(ringAngle) * normal + sin(ringAngle) * around);
+        ConeResult side = traceCone(origin, direction, tanHalf);
+        radiance += sideWeight * side.radiance;
+        occlusion += sideWeight * side.occlusion;
+    }
+    return vec4(radiance, occlusion);
+}
+
+// The GGX lobe's width as a cone: the reflected lobe's half-width at half maximum is about
+// 1.3·α for small α (D(θh) halves at tan θh ≈ 0.64·α, and the reflection doubles the angle).
+float specularConeTanHalfAperture(float alpha) { return clamp(1.3f * alpha, 0.02f, 1.0f); }
+
+// Directional albedo of the GGX lobe, (A, B) with ∫f·cosθ = F0·A + B (Karis 2014, after Lazarov 2013).
+vec2 environmentBrdf(float roughness, float NdotV) {
+    const vec4 c0 = vec4(-1.0f, -0.0275f, -0.572f, 0.022f);
+    const vec4 c1 = vec4(1.0f, 0.0425f, 1.04f, -0.04f);
+    vec4 r = roughness * c0 + c1;
+    float a004 = min(r.x * r.x, exp2(-9.28f * NdotV)) * r.x + r.y;
+    return vec2(-1.04f, 1.04f) * a004 + r.zw;
+}
+
+#endif

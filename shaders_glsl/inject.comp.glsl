@@ -1,0 +1,54 @@
+#version 460
+// Light injection: the outgoing radiance of every occupied voxel, from the direct light it
+// receives (with shadow-map visibility) reflected diffusely, plus its emission. Written to
+// level 0 of the radiance volume as radiance × scale premultiplied by opacity.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.h"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, set = 0, binding = 2) readonly buffer ShadowViews { ShadowView shadowViews[]; };
+layout(set = 0, binding = 3) uniform sampler2DArrayShadow sunShadowMaps;
+layout(set = 0, binding = 4) uniform sampler2DArrayShadow localShadowMaps;
+layout(set = 0, binding = 5, rgba8) uniform readonly image3D voxelAlbedo;
+layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
+layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
+layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
+
+#include "direct_light.glsl"
+
+void main() {
+    ivec3 voxel = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(voxel, imageSize(radiance)))) return;
+    vec4 albedoOpacity = imageLoad(voxelAlbedo, voxel);
+    if (albedoOpacity.a <= 0.0f) {
+        imageStore(radiance, voxel, vec4(0.0f));
+        return;
+    }
+    vec3 normalSum = imageLoad(voxelNormal, voxel).xyz;
+    float normalLength = length(normalSum);
+    vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
+    float voxelSize = frame.grid.originVoxelSize.w;
+
+    vec3 irradiance = vec3(0.0f);
+    for (uint i = 0u; i < frame.counts.x; ++i) {
+        GpuLight light = lights[i];
+        vec3 toLight;
+        float distanceToLight;
+        vec3 incident = incidentLight(light, center, toLight, distanceToLight);
+        // A voxel whose triangles disagree (a thin two-sided wall, a corner) has a short mean
+        // normal; it is lit as an average orientation (cosθ ≈ 1/2) rather than not at all.
+        vec3 normal = normalLength > 0.25f ? normalSum / normalLength : toLight;
+        float cosine = normalLength > 0.25f ? max(dot(normal, toLight), 0.0f) : 0.5f;
+        if (cosine <= 0.0f) continue;
+        // The voxel centre can lie behind its surface: look the shadow up one voxel along the normal.
+        vec3 lookup = center + normal * voxelSize;
+        float visibility = shadowVisibility(light, lookup, normal, distanceToLight);
+        irradiance += incident * cosine * visibility;
+    }
+    vec3 outgoing = albedoOpacity.rgb * (1.0f / PI) * irradiance + imageLoad(voxelEmission, voxel).rgb;
+    float opacity = albedoOpacity.a;
+    imageStore(radiance, voxel, vec4(outgoing * frame.coneWeights.w * opacity, opacity));
+}

@@ -1,0 +1,78 @@
+#include "render/inject_pass.h"
+
+#include <algorithm>
+
+#include "gpu/commands.h"
+#include "render/voxel_grid_fit.h"
+
+namespace vct {
+
+InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution)
+    : resolution(voxelResolution), context_(context) {
+    ImageDesc desc;
+    desc.type = VK_IMAGE_TYPE_3D;
+    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.extent = {resolution, resolution, resolution};
+    desc.mipLevels = voxelMipCount(resolution);
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    desc.debugName = "voxel radiance";
+    radiance = GpuImage(context, desc);
+
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
+        context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                  {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
+                  {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
+                  {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
+                  {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute}});
+    VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
+    pipeline = Pipeline(context, createComputePipeline(context, layout, "inject.comp"), layout, setLayout);
+}
+
+void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+                        const ShadowPass& shadows, const VoxelizePass& voxels) {
+    // Level 0 is rewritten whole; the previous frame's cone tracing must be done reading it.
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                 initialized ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    initialized = true;
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+    DescriptorPush()
+        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .buffer(1, lights)
+        .buffer(2, shadowViews)
+        .sampledImage(3, shadows.sunMaps.view, shadows.compareSampler.sampler)
+        .sampledImage(4, shadows.localMaps.view, shadows.compareSampler.sampler)
+        .storageImage(5, voxels.albedoOpacity.view)
+        .storageImage(6, voxels.normal.view)
+        .storageImage(7, voxels.emission.view)
+        .storageImage(8, radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0])
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+    const uint32_t groups = (resolution + 3) / 4;
+    vkCmdDispatch(commands, groups, groups, groups);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+float radianceStorageScale(const std::vector<Light>& lights, const Scene& scene, float voxelSize) {
+    float brightest = 0.0f;
+    for (const Light& light : lights) {
+        const float intensity = light.intensity * std::max({light.color.r, light.color.g, light.color.b});
+        // A Lambertian voxel one voxel from a point light reflects at most I/d²/π.
+        brightest += light.type == LightType::Directional ? intensity / 3.14159265f
+                                                          : intensity / (voxelSize * voxelSize * 3.14159265f);
+    }
+    for (const Material& material : scene.materials)
+        brightest = std::max({brightest, material.emission.r, material.emission.g, material.emission.b});
+    // float16 holds up to 65504: the brightest voxel maps to 1024, leaving room for sums in the mips.
+    return brightest > 0.0f ? 1024.0f / brightest : 1.0f;
+}
+
+}  // namespace vct

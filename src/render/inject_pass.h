@@ -1,0 +1,33 @@
+// Light injection: direct light (with shadow-map visibility) and emission turned into the
+// outgoing radiance of every occupied voxel, written to level 0 of the radiance volume.
+#pragma once
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+#include "render/shadow_pass.h"
+#include "render/voxelize_pass.h"
+
+namespace vct {
+
+struct InjectPass {
+    InjectPass(GpuContext& context, uint32_t resolution);
+
+    // Writes level 0 of `radiance`. Leaves it in GENERAL, visible to the mip pass.
+    void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+                const ShadowPass& shadows, const VoxelizePass& voxels);
+
+    uint32_t resolution;
+    // RGBA16F with the full mip chain: radiance × scale premultiplied by opacity, and opacity.
+    GpuImage radiance;
+    Pipeline pipeline;
+    bool initialized = false;
+
+private:
+    GpuContext& context_;
+};
+
+// The scale that keeps the stored radiance inside float16's range whatever the scene's units:
+// 1 / an upper estimate of any voxel's radiance (a light one voxel away, the brightest emitter).
+float radianceStorageScale(const std::vector<Light>& lights, const Scene& scene, float voxelSize);
+
+}  // namespace vct
