@@ -264,6 +264,8 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     if (!context.fatal.empty()) throw Error(context.fatal);
     if (!parsed) {
         while (!errors.empty() && errors.back() == '\n') errors.pop_back();
+        for (size_t newline = errors.find('\n'); newline != std::string::npos; newline = errors.find('\n'))
+            errors.replace(newline, 1, "; ");  // one line per message
         throw Error(path + ": not a valid glTF file: " +
                     (errors.empty() ? std::string("tinygltf gave no reason") : errors));
     }
@@ -407,6 +409,10 @@ struct Converter {
         if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             warn(path + ".mode", "points and lines are not rendered; the primitive is skipped");
+            return;
+        }
+        if (!primitive.attributes.count("POSITION")) {
+            warn(path + ".attributes", "has no POSITION; the primitive is skipped");
             return;
         }
         const glm::dmat3 linear(world);

@@ -31,6 +31,15 @@ std::string formatNumber(double value) {
     return text;
 }
 
+// The bytes the last element of an accessor occupies: a matrix's last column needs no padding after it.
+size_t lastElementBytes(int type, int componentType) {
+    const size_t componentBytes = componentByteSize(componentType);
+    if (type == TINYGLTF_TYPE_MAT2 && componentBytes == 1) return 4 + 2;
+    if (type == TINYGLTF_TYPE_MAT3 && componentBytes == 1) return 4 + 4 + 3;
+    if (type == TINYGLTF_TYPE_MAT3 && componentBytes == 2) return 8 + 8 + 6;
+    return accessorElementBytes(type, componentType);
+}
+
 struct Validator {
     const tinygltf::Model& model;
     const std::string& file;
@@ -143,7 +152,8 @@ struct Validator {
                                    " bytes do not fit the byteStride " + std::to_string(viewStride) +
                                    " of bufferView " + std::to_string(accessor.bufferView));
                 checkRange(path, accessor.bufferView, accessor.byteOffset,
-                           viewStride ? viewStride : elementBytes, accessor.count, elementBytes);
+                           viewStride ? viewStride : elementBytes, accessor.count,
+                           lastElementBytes(accessor.type, accessor.componentType));
             }
             if (accessor.sparse.isSparse) checkSparse(path + ".sparse", accessor, elementBytes);
         }
@@ -239,8 +249,12 @@ struct Validator {
         if (primitive.mode < -1 || primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
             fail(path + ".mode", std::to_string(primitive.mode) + " is not a glTF primitive mode");
         checkReference(path + ".material", primitive.material, model.materials.size(), "material", true);
+        // A primitive without POSITION is valid glTF; the loader skips it with a warning. Its other
+        // attributes are checked against the first one instead.
         const auto position = primitive.attributes.find("POSITION");
-        if (position == primitive.attributes.end()) fail(path + ".attributes", "has no POSITION");
+        const auto reference =
+            position != primitive.attributes.end() ? position : primitive.attributes.begin();
+        if (reference == primitive.attributes.end()) fail(path + ".attributes", "has no attributes");
 
         size_t vertexCount = 0;
         for (const auto& [name, accessorIndex] : primitive.attributes) {
@@ -253,13 +267,13 @@ struct Validator {
                                         (accessor.normalized ? "normalized " : "") +
                                         componentTypeName(accessor.componentType) +
                                         ", which glTF does not allow for " + name);
-            if (name == "POSITION") vertexCount = accessor.count;
+            if (name == reference->first) vertexCount = accessor.count;
         }
         for (const auto& [name, accessorIndex] : primitive.attributes)
             if (model.accessors[size_t(accessorIndex)].count != vertexCount)
                 fail(path + ".attributes." + name,
                      "has " + std::to_string(model.accessors[size_t(accessorIndex)].count) +
-                         " elements but POSITION has " + std::to_string(vertexCount));
+                         " elements but " + reference->first + " has " + std::to_string(vertexCount));
         for (const char* name : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
             const auto attribute = primitive.attributes.find(name);
             if (attribute != primitive.attributes.end())

@@ -210,6 +210,17 @@ TEST(GltfLoader, SkipsPointsAndLinesWithAWarning) {
     EXPECT_NE(scene.warnings[0].find("meshes[1].primitives[0].mode"), std::string::npos) << scene.warnings[0];
 }
 
+TEST(GltfLoader, SkipsPrimitivesWithoutPositionWithAWarning) {
+    GltfBuilder gltf = test::triangleScene();
+    gltf.document["meshes"][0]["primitives"][0]["attributes"].erase("POSITION");
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_EQ(scene.triangleCount(), 0u);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("meshes[0].primitives[0].attributes: has no POSITION"),
+              std::string::npos)
+        << scene.warnings[0];
+}
+
 TEST(GltfLoader, LoadsOnlyTheDefaultScene) {
     GltfBuilder gltf = test::triangleScene();
     const int moved = gltf.addNode({{"mesh", 0}, {"translation", {0, 0, 7}}});
