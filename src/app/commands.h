@@ -7,5 +7,7 @@
 namespace vct {
 
 int runRender(const std::vector<std::string>& arguments);
+int runView(const std::vector<std::string>& arguments);
+int runBench(const std::vector<std::string>& arguments);
 
 }  // namespace vct

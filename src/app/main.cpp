@@ -13,6 +13,8 @@ static void printUsage() {
         "\n"
         "commands:\n"
         "  render   render one image to a .pfm (linear radiance) or .png file (vct render --help)\n"
+        "  view     open a window and explore a scene interactively (vct view --help)\n"
+        "  bench    measure run time against error over a matrix of settings (vct bench --help)\n"
         "\n"
         "Errors are reported as one sentence and exit code 1.\n");
 }
@@ -26,6 +28,8 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 2, argv + argc);
     try {
         if (command == "render") return vct::runRender(arguments);
+        if (command == "view") return vct::runView(arguments);
+        if (command == "bench") return vct::runBench(arguments);
         if (command == "--help" || command == "-h" || command == "help") {
             printUsage();
             return 0;

@@ -54,14 +54,22 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       injectPass_(context, settings.voxelResolution),
       mipsPass_(context),
-      gbufferPass_(context, sceneGpu_, settings.width * settings.supersample, settings.height * settings.supersample),
-      shadePass_(context, settings.width * settings.supersample, settings.height * settings.supersample),
-      resolvePass_(context, settings.width, settings.height, settings.supersample),
       timer_(context) {
     for (const Material& material : scene.materials)
         brightestEmission_ = std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
     voxelizePass_ = std::make_unique<VoxelizePass>(context, scene, sceneGpu_, grid_);
+    resize(settings.width, settings.height);
     setLights(lights_);
+}
+
+void Renderer::resize(uint32_t width, uint32_t height) {
+    if (gbufferPass_) vkDeviceWaitIdle(context_.device);
+    settings_.width = width;
+    settings_.height = height;
+    const uint32_t samplesWide = width * settings_.supersample, samplesHigh = height * settings_.supersample;
+    gbufferPass_ = std::make_unique<GBufferPass>(context_, sceneGpu_, samplesWide, samplesHigh);
+    shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
+    resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.supersample);
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
@@ -113,7 +121,7 @@ void Renderer::setShadingSettings(const RenderSettings& settings) {
 }
 
 void Renderer::writeFrameConstants() {
-    const uint32_t width = gbufferPass_.width, height = gbufferPass_.height;
+    const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
     glsl::FrameConstants constants{};
     constants.viewProjection = cameraMatrices(camera_, float(width) / float(height), sceneBounds_).viewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
@@ -172,16 +180,16 @@ FrameStats Renderer::renderFrame() {
             injectPass_.initialized = true;
         }
         timer_.begin(commands, "gbuffer");
-        gbufferPass_.record(commands, sceneGpu_, frameConstants_.buffer);
+        gbufferPass_->record(commands, sceneGpu_, frameConstants_.buffer);
         timer_.end(commands);
         timer_.begin(commands, "shade");
         const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_.materials.buffer, lightsBuffer_.buffer,
                                  shadowViewsBuffer_.buffer};
-        shadePass_.record(commands, inputs, gbufferPass_, *shadowPass_, injectPass_.radiance,
+        shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, injectPass_.radiance,
                           voxelizePass_->albedoOpacity, voxelizePass_->normal);
         timer_.end(commands);
         timer_.begin(commands, "resolve");
-        resolvePass_.record(commands, shadePass_.radiance);
+        resolvePass_->record(commands, shadePass_->radiance);
         timer_.end(commands);
     });
     shadowsDirty_ = false;
@@ -199,13 +207,13 @@ FrameStats Renderer::renderFrame() {
 }
 
 Image Renderer::readImage() {
-    const uint32_t width = resolvePass_.width, height = resolvePass_.height;
+    const uint32_t width = resolvePass_->width, height = resolvePass_->height;
     Buffer readback(context_, VkDeviceSize(width) * height * 4 * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     submitAndWait(context_, [&](VkCommandBuffer commands) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {width, height, 1};
-        const VkImage resolved = resolvePass_.resolved.image;
+        const VkImage resolved = resolvePass_->resolved.image;
         imageBarrier(commands, resolved, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                      VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -231,8 +239,8 @@ namespace vct {
 uint64_t Renderer::deviceMemoryBytes() const {
     uint64_t bytes = 0;
     for (const GpuImage* image : std::initializer_list<const GpuImage*>{
-             &gbufferPass_.position, &gbufferPass_.normal, &gbufferPass_.baseColor, &gbufferPass_.depth,
-          &shadePass_.radiance, &resolvePass_.resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps,
+             &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->depth,
+          &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps,
           &voxelizePass_->albedoOpacity, &voxelizePass_->normal, &voxelizePass_->emission, &injectPass_.radiance})
         bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_.textures) bytes += texture.memorySize;

@@ -52,6 +52,9 @@ public:
     // cone parameters, debug views. (Image size, voxel and shadow-map resolution need a new Renderer.)
     void setShadingSettings(const RenderSettings& settings);
 
+    // A new image size (a resized window): only the image-sized passes are rebuilt.
+    void resize(uint32_t width, uint32_t height);
+
     // Records, submits and waits for one frame.
     FrameStats renderFrame();
     // The last frame's image: linear radiance, width × height, top row first.
@@ -62,7 +65,7 @@ public:
     const GpuImage& voxelRadiance() const { return injectPass_.radiance; }
     // The last frame's resolved image (RGBA32F, width × height, GENERAL layout), e.g. for a viewer
     // to tone-map onto its swapchain.
-    const GpuImage& output() const { return resolvePass_.resolved; }
+    const GpuImage& output() const { return resolvePass_->resolved; }
     // Device memory held by the renderer's images and buffers, in bytes.
     uint64_t deviceMemoryBytes() const;
 
@@ -90,9 +93,10 @@ private:
     std::unique_ptr<VoxelizePass> voxelizePass_;
     InjectPass injectPass_;
     MipsPass mipsPass_;
-    GBufferPass gbufferPass_;
-    ShadePass shadePass_;
-    ResolvePass resolvePass_;
+    // Sized by the image: rebuilt by resize() without touching the voxels or shadow maps.
+    std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<ShadePass> shadePass_;
+    std::unique_ptr<ResolvePass> resolvePass_;
     GpuTimer timer_;
 };
 

@@ -65,6 +65,8 @@ struct RenderSettings {
     float coneStopOpacity = 0.95f;       // a cone stops once this opaque
     float aoFalloff = 8.0f;              // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
     bool skipEmptySpace = true;          // march through empty space with the coarse mips
+    bool anisotropicVoxels = false;      // six directional mip chains (Crassin et al.) instead of one
+    uint32_t bounces = 1;                // 2 = re-inject the light the voxels gather by cones
 
     DebugView debugView = DebugView::None;
     uint32_t debugVoxelMip = 0;          // the mip level the voxel views show
