@@ -1,10 +1,28 @@
 // Cone tracing through the pre-filtered radiance volume (Crassin et al. 2011, section 3).
-// Requires: frame (FrameConstants) and voxelRadiance (sampler3D with the mip chain; rgb is
-// radiance × scale premultiplied by opacity, a is opacity).
+// Requires: frame (FrameConstants), voxelRadiance (sampler3D with the mip chain; rgb is
+// radiance × scale premultiplied by opacity, a is opacity) and, for anisotropic voxels, the six
+// directional chains voxelPosX … voxelNegZ (their level 0 is the grid's level 1).
 #ifndef VCT_CONE_TRACING_GLSL
 #define VCT_CONE_TRACING_GLSL
 
 #include "voxel_grid.h"
+
+// The volume seen by a cone travelling along `direction`: isotropic, or (anisotropic voxels) the
+// three directional chains facing the direction, weighted by its squared components.
+vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
+    if (frame.counts.w == 0u) return textureLod(voxelRadiance, uvw, lod);
+    float directionalLod = max(lod - 1.0f, 0.0f);
+    vec3 weight = direction * direction;
+    vec4 directional =
+        weight.x * (direction.x >= 0.0f ? textureLod(voxelPosX, uvw, directionalLod)
+                                        : textureLod(voxelNegX, uvw, directionalLod)) +
+        weight.y * (direction.y >= 0.0f ? textureLod(voxelPosY, uvw, directionalLod)
+                                        : textureLod(voxelNegY, uvw, directionalLod)) +
+        weight.z * (direction.z >= 0.0f ? textureLod(voxelPosZ, uvw, directionalLod)
+                                        : textureLod(voxelNegZ, uvw, directionalLod));
+    // Below level 1 blend towards the finest (isotropic) level.
+    return lod >= 1.0f ? directional : mix(textureLod(voxelRadiance, uvw, 0.0f), directional, lod);
+}
 
 struct ConeResult {
     vec3 radiance;    // gathered radiance, scene units
@@ -34,7 +52,11 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
         float diameter = max(1.0f, 2.0f * tanHalfAperture * distance);
         float lod = min(log2(diameter), maxLod);
         vec3 position = start + direction * distance;
-        if (any(lessThan(position, vec3(0.0f))) || any(greaterThan(position, vec3(resolution)))) break;
+        // Stop once the footprint has left the grid (outside is transparent black): a cone that
+        // stopped when its centre left would skip a wall lying in the grid's last voxels.
+        if (any(lessThan(position, vec3(-0.5f * diameter))) ||
+            any(greaterThan(position, vec3(resolution + 0.5f * diameter))))
+            break;
         vec3 uvw = position / resolution;
         float stepLength = max(stepFraction * diameter, 0.25f);
 
@@ -48,7 +70,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
             }
         }
 
-        vec4 voxel = textureLod(voxelRadiance, uvw, lod);
+        vec4 voxel = sampleVoxels(uvw, lod, direction);
         if (voxel.a > 0.0f) {
             float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / diameter);
             vec3 correctedColor = voxel.rgb * (correctedAlpha / voxel.a);

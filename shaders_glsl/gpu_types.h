@@ -47,7 +47,7 @@ const uint USE_SHADOWS = 64u;
 struct FrameConstants {
     mat4 viewProjection;
     vec4 cameraPosition;  // xyz, w unused
-    uvec4 counts;         // x lights, y shadow views, z SHOW_* / USE_* flags, w unused
+    uvec4 counts;         // x lights, y shadow views, z SHOW_* / USE_* flags, w 1 = anisotropic voxels
     vec4 shading;         // x ambient factor, y shadow normal offset (texels), z PCF radius (texels), w unused
     vec4 renderSize;      // width, height, 1/width, 1/height of the render target
 

@@ -12,7 +12,7 @@ namespace vct {
 std::set<std::string> sceneOptionNames() {
     return {"scene",       "width",      "height",     "mode",         "supersample", "camera-pos",
             "camera-target", "fov",      "light-dir",  "light-intensity", "device",   "ambient",
-            "shadow-map",  "local-shadow-map", "disable", "allowed-root", "gpu-timeout"};
+            "shadow-map",  "local-shadow-map", "disable", "allowed-root", "gpu-timeout", "voxels", "cones", "cone-aperture", "cone-step", "voxel-mips", "bounces"};
 }
 
 std::set<std::string> sceneFlagNames() { return {"validate", "strict"}; }
@@ -28,6 +28,11 @@ std::string sceneOptionsHelp() {
             "  --disable LIST           components to switch off, comma-separated: direct-diffuse,\n"
             "                           direct-specular, indirect-diffuse, indirect-specular, ao, emission, shadows\n"
             "  --ambient F              non-physical ambient light factor (default 0)\n"
+            "  --voxels N               voxels per side of the grid, a power of two 32..512 (default 128)\n"
+            "  --cones N                diffuse cones (default 6); --cone-aperture DEGREES (default 60)\n"
+            "  --cone-step F            cone step as a fraction of its diameter (default 0.5)\n"
+            "  --voxel-mips isotropic|anisotropic   one mip chain or six directional ones\n"
+            "  --bounces 1|2            2 re-injects the light gathered by the voxels (default 1)\n"
             "  --camera-pos x,y,z --camera-target x,y,z --fov DEGREES   override the scene camera\n"
             "  --light-dir x,y,z        direction the sun's light travels (adds a sun if the scene has none)\n"
             "  --light-intensity E      that sun's illuminance (default 3)\n"
@@ -69,6 +74,16 @@ RenderSettings renderSettingsFromArguments(const Arguments& arguments) {
     settings.ambientFactor = arguments.number("ambient", 0.0f, 0.0f, 1e6f);
     settings.sunShadowMapSize = arguments.unsignedInt("shadow-map", settings.sunShadowMapSize, 16, 16384);
     settings.localShadowMapSize = arguments.unsignedInt("local-shadow-map", settings.localShadowMapSize, 16, 16384);
+
+    settings.voxelResolution = arguments.unsignedInt("voxels", settings.voxelResolution, 32, 512);
+    settings.diffuseConeCount = arguments.unsignedInt("cones", settings.diffuseConeCount, 1, 32);
+    settings.diffuseConeAperture = arguments.number("cone-aperture", settings.diffuseConeAperture, 1.0f, 120.0f);
+    settings.coneStep = arguments.number("cone-step", settings.coneStep, 0.05f, 4.0f);
+    settings.bounces = arguments.unsignedInt("bounces", settings.bounces, 1, 2);
+    const std::string mips = arguments.text("voxel-mips", settings.anisotropicVoxels ? "anisotropic" : "isotropic");
+    if (mips != "isotropic" && mips != "anisotropic")
+        throw Error("--voxel-mips must be isotropic or anisotropic, not '" + mips + "'");
+    settings.anisotropicVoxels = mips == "anisotropic";
 
     std::istringstream disabled(arguments.text("disable", ""));
     for (std::string name; std::getline(disabled, name, ',');) {

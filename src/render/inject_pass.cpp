@@ -7,7 +7,7 @@
 
 namespace vct {
 
-InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution)
+InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution, bool anisotropic)
     : resolution(voxelResolution), context_(context) {
     ImageDesc desc;
     desc.type = VK_IMAGE_TYPE_3D;
@@ -17,6 +17,17 @@ InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution)
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     desc.debugName = "voxel radiance";
     radiance = GpuImage(context, desc);
+    if (anisotropic) {
+        const char* names[6] = {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y",
+                                "voxel radiance -y", "voxel radiance +z", "voxel radiance -z"};
+        ImageDesc directionalDesc = desc;
+        directionalDesc.extent = {resolution / 2, resolution / 2, resolution / 2};
+        directionalDesc.mipLevels = desc.mipLevels - 1;
+        for (const char* name : names) {
+            directionalDesc.debugName = name;
+            directional.push_back(GpuImage(context, directionalDesc));
+        }
+    }
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
     VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
@@ -36,12 +47,7 @@ InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution)
 void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
                         const ShadowPass& shadows, const VoxelizePass& voxels) {
     // Level 0 is rewritten whole; the previous frame's cone tracing must be done reading it.
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                 initialized ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    initialized = true;
+    prepareLayouts(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -59,6 +65,18 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuf
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+void InjectPass::prepareLayouts(VkCommandBuffer commands) {
+    std::vector<const GpuImage*> volumes = {&radiance};
+    for (const GpuImage& chain : directional) volumes.push_back(&chain);
+    for (const GpuImage* volume : volumes)
+        imageBarrier(commands, volume->image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     initialized ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    initialized = true;
 }
 
 float radianceStorageScale(const std::vector<Light>& lights, const Scene& scene, float voxelSize) {

@@ -10,16 +10,28 @@
 namespace vct {
 
 struct InjectPass {
-    InjectPass(GpuContext& context, uint32_t resolution);
+    InjectPass(GpuContext& context, uint32_t resolution, bool anisotropic);
 
     // Writes level 0 of `radiance`. Leaves it in GENERAL, visible to the mip pass.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
                 const ShadowPass& shadows, const VoxelizePass& voxels);
 
+    // Puts the volumes in GENERAL (from UNDEFINED the first time) after earlier reads.
+    void prepareLayouts(VkCommandBuffer commands);
+
     uint32_t resolution;
     // RGBA16F with the full mip chain: radiance × scale premultiplied by opacity, and opacity.
     GpuImage radiance;
+    // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
+    // down (level 0 is shared); empty when the voxels are isotropic.
+    std::vector<GpuImage> directional;
     Pipeline pipeline;
+
+    // The view each of the six directional bindings gets (the isotropic volume stands in when
+    // the voxels are isotropic; the shaders then never sample it).
+    VkImageView directionalView(uint32_t direction) const {
+        return directional.empty() ? radiance.view : directional[direction].view;
+    }
     bool initialized = false;
 
 private:

@@ -12,14 +12,49 @@ MipsPass::MipsPass(GpuContext& context) : context_(context) {
                                              {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
     VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
     pipeline = Pipeline(context, createComputePipeline(context, layout, "mips.comp"), layout, setLayout);
+    VkDescriptorSetLayout directionalSetLayout =
+        createPushDescriptorLayout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+                                             {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
+    VkPipelineLayout directionalLayout = createPipelineLayout(context, {directionalSetLayout}, sizeof(uint32_t));
+    directionalPipeline = Pipeline(context, createComputePipeline(context, directionalLayout, "mips_anisotropic.comp"),
+                                   directionalLayout, directionalSetLayout);
+}
+
+static VkImageView mipView(const GpuImage& image, uint32_t level) {
+    return image.mipViews.empty() ? image.view : image.mipViews[level];
+}
+
+void MipsPass::recordDirectional(VkCommandBuffer commands, const GpuImage& volume,
+                                 const std::vector<GpuImage>& directional) {
+    if (directional.empty()) return;
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, directionalPipeline.pipeline);
+    const uint32_t levels = directional[0].desc.mipLevels;
+    for (uint32_t level = 0; level < levels; ++level) {
+        for (uint32_t direction = 0; direction < 6; ++direction) {
+            // The first directional level is built from the shared finest level.
+            const VkImageView source = level == 0 ? mipView(volume, 0) : mipView(directional[direction], level - 1);
+            DescriptorPush()
+                .storageImage(0, source)
+                .storageImage(1, mipView(directional[direction], level))
+                .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, directionalPipeline.layout);
+            vkCmdPushConstants(commands, directionalPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(direction),
+                               &direction);
+            const uint32_t size = std::max(directional[direction].desc.extent.width >> level, 1u);
+            const uint32_t groups = (size + 3) / 4;
+            vkCmdDispatch(commands, groups, groups, groups);
+        }
+        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    }
 }
 
 void MipsPass::record(VkCommandBuffer commands, const GpuImage& volume) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     for (uint32_t level = 1; level < volume.desc.mipLevels; ++level) {
         DescriptorPush()
-            .storageImage(0, volume.mipViews[level - 1])
-            .storageImage(1, volume.mipViews[level])
+            .storageImage(0, mipView(volume, level - 1))
+            .storageImage(1, mipView(volume, level))
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
         const uint32_t size = std::max(volume.desc.extent.width >> level, 1u);
         const uint32_t groups = (size + 3) / 4;

@@ -4,6 +4,8 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 
+#include <vector>
+
 namespace vct {
 
 struct MipsPass {
@@ -12,8 +14,11 @@ struct MipsPass {
     // Reads level 0 of `volume` (GENERAL) and writes every coarser level; leaves the volume in
     // GENERAL, visible to sampling in the fragment and compute stages.
     void record(VkCommandBuffer commands, const GpuImage& volume);
+    // Builds the six directional chains from level 0 of `volume` (anisotropic voxels).
+    void recordDirectional(VkCommandBuffer commands, const GpuImage& volume, const std::vector<GpuImage>& directional);
 
     Pipeline pipeline;
+    Pipeline directionalPipeline;
 
 private:
     GpuContext& context_;

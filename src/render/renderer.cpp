@@ -49,17 +49,26 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       sceneBounds_(scene.bounds()),
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
-      sceneGpu_(context, scene),
-      grid_(fitVoxelGrid(scene.bounds(), settings.voxelResolution)),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-      injectPass_(context, settings.voxelResolution),
+      injectPass_(context, settings.voxelResolution, settings.anisotropicVoxels),
       mipsPass_(context),
       timer_(context) {
+    setGeometry(scene);
+    setLights(lights_);
+}
+
+void Renderer::setGeometry(const Scene& scene) {
+    if (sceneGpu_) vkDeviceWaitIdle(context_.device);
+    sceneBounds_ = scene.bounds();
+    grid_ = fitVoxelGrid(sceneBounds_, settings_.voxelResolution);
+    brightestEmission_ = 0.0f;
     for (const Material& material : scene.materials)
         brightestEmission_ = std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
-    voxelizePass_ = std::make_unique<VoxelizePass>(context, scene, sceneGpu_, grid_);
-    resize(settings.width, settings.height);
-    setLights(lights_);
+    sceneGpu_ = std::make_unique<SceneGpu>(context_, scene);
+    voxelizePass_ = std::make_unique<VoxelizePass>(context_, scene, *sceneGpu_, grid_);
+    resize(settings_.width, settings_.height);  // the G-buffer pipeline depends on the scene's textures
+    voxelsDirty_ = true;
+    if (shadowPass_) setLights(lights_);  // shadow views are fitted to the scene's bounds
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
@@ -67,7 +76,7 @@ void Renderer::resize(uint32_t width, uint32_t height) {
     settings_.width = width;
     settings_.height = height;
     const uint32_t samplesWide = width * settings_.supersample, samplesHigh = height * settings_.supersample;
-    gbufferPass_ = std::make_unique<GBufferPass>(context_, sceneGpu_, samplesWide, samplesHigh);
+    gbufferPass_ = std::make_unique<GBufferPass>(context_, *sceneGpu_, samplesWide, samplesHigh);
     shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
     resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.supersample);
 }
@@ -127,7 +136,7 @@ void Renderer::writeFrameConstants() {
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
     constants.cameraPosition = glm::vec4(camera_.position, 1.0f);
     constants.counts = glm::uvec4(uint32_t(shadowLayout_.lights.size()), uint32_t(shadowLayout_.views.size()),
-                                  componentFlags(settings_), 0u);
+                                  componentFlags(settings_), settings_.anisotropicVoxels ? 1u : 0u);
     constants.shading = glm::vec4(settings_.ambientFactor, settings_.shadowNormalOffset, settings_.pcfRadius, 0.0f);
     constants.renderSize = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
     const float resolution = float(grid_.resolution.x);
@@ -156,12 +165,12 @@ FrameStats Renderer::renderFrame() {
         timer_.reset(commands);
         if (drawShadows) {
             timer_.begin(commands, "shadow");
-            shadowPass_->record(commands, sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_);
+            shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_);
             timer_.end(commands);
         }
         if (voxelize) {
             timer_.begin(commands, "voxelize");
-            voxelizePass_->record(commands, sceneGpu_);
+            voxelizePass_->record(commands, *sceneGpu_);
             timer_.end(commands);
         }
         if (inject) {
@@ -171,21 +180,24 @@ FrameStats Renderer::renderFrame() {
             timer_.end(commands);
             timer_.begin(commands, "mips");
             mipsPass_.record(commands, injectPass_.radiance);
+            mipsPass_.recordDirectional(commands, injectPass_.radiance, injectPass_.directional);
             timer_.end(commands);
         } else if (!injectPass_.initialized) {
-            // Nothing injected yet: the shading pass still binds the volume, so give it a layout.
-            imageBarrier(commands, injectPass_.radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-            injectPass_.initialized = true;
+            // Nothing voxelized or injected yet: the shading pass still binds the voxel images
+            // (without reading them), so give them a layout.
+            for (const GpuImage* image : {&voxelizePass_->albedoOpacity, &voxelizePass_->normal})
+                imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                             VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+            injectPass_.prepareLayouts(commands);
         }
         timer_.begin(commands, "gbuffer");
-        gbufferPass_->record(commands, sceneGpu_, frameConstants_.buffer);
+        gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer);
         timer_.end(commands);
         timer_.begin(commands, "shade");
-        const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_.materials.buffer, lightsBuffer_.buffer,
+        const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
                                  shadowViewsBuffer_.buffer};
-        shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, injectPass_.radiance,
+        shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, injectPass_,
                           voxelizePass_->albedoOpacity, voxelizePass_->normal);
         timer_.end(commands);
         timer_.begin(commands, "resolve");
@@ -243,9 +255,11 @@ uint64_t Renderer::deviceMemoryBytes() const {
           &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps,
           &voxelizePass_->albedoOpacity, &voxelizePass_->normal, &voxelizePass_->emission, &injectPass_.radiance})
         bytes += image->memorySize;
-    for (const GpuImage& texture : sceneGpu_.textures) bytes += texture.memorySize;
-    for (const Buffer* buffer : std::initializer_list<const Buffer*>{&sceneGpu_.vertices, &sceneGpu_.indices, &sceneGpu_.triangleMaterials,
-                                 &sceneGpu_.materials, &voxelizePass_->workItems})
+    for (const GpuImage& chain : injectPass_.directional) bytes += chain.memorySize;
+    for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
+    for (const Buffer* buffer : std::initializer_list<const Buffer*>{&sceneGpu_->vertices, &sceneGpu_->indices,
+                                 &sceneGpu_->triangleMaterials,
+                                 &sceneGpu_->materials, &voxelizePass_->workItems})
         bytes += buffer->size;
     for (const Buffer& accumulation : voxelizePass_->accumulation) bytes += accumulation.size;
     return bytes;

@@ -46,6 +46,9 @@ public:
     void setCamera(const Camera& camera) { camera_ = camera; }
     const Camera& camera() const { return camera_; }
     void setLights(const std::vector<Light>& lights);
+    // New geometry (moved vertices, changed transforms or a new scene): re-uploaded, and the voxels
+    // and shadow maps are rebuilt on the next frame. Lights and camera stay as they are.
+    void setGeometry(const Scene& scene);
     const std::vector<Light>& lights() const { return lights_; }
     const RenderSettings& settings() const { return settings_; }
     // Changes that need no new images or voxels: mode, components, ambient, shadow filtering,
@@ -84,7 +87,7 @@ private:
     float radianceScale_ = 1.0f;
     glsl::VoxelGridParams grid_;
 
-    SceneGpu sceneGpu_;
+    std::unique_ptr<SceneGpu> sceneGpu_;
     ShadowLayout shadowLayout_;
     Buffer frameConstants_;
     Buffer lightsBuffer_;

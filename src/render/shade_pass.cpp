@@ -33,7 +33,13 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
                   {8, sampled, fragment},
                   {9, sampled, fragment},
                   {10, sampled, fragment},
-                  {11, sampled, fragment}});
+                  {11, sampled, fragment},
+                  {12, sampled, fragment},
+                  {13, sampled, fragment},
+                  {14, sampled, fragment},
+                  {15, sampled, fragment},
+                  {16, sampled, fragment},
+                  {17, sampled, fragment}});
     VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
     GraphicsPipelineDesc pipelineDesc;
     pipelineDesc.vertexShader = "fullscreen.vert";
@@ -43,7 +49,7 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
 }
 
 void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
-                       const ShadowPass& shadows, const GpuImage& voxelRadiance, const GpuImage& voxelAlbedo,
+                       const ShadowPass& shadows, const InjectPass& voxelLight, const GpuImage& voxelAlbedo,
                        const GpuImage& voxelNormal) {
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
@@ -60,8 +66,11 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
     rendering.pColorAttachments = &color;
     vkCmdBeginRendering(commands, &rendering);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
-    DescriptorPush()
-        .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+    DescriptorPush push;
+    for (uint32_t direction = 0; direction < 6; ++direction)
+        push.sampledImage(12 + direction, voxelLight.directionalView(direction), volumeSampler.sampler,
+                          VK_IMAGE_LAYOUT_GENERAL);
+    push.buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
         .buffer(1, inputs.materials)
         .buffer(2, inputs.lights)
         .buffer(3, inputs.shadowViews)
@@ -70,7 +79,7 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
         .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
         .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
         .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
-        .sampledImage(9, voxelRadiance.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(9, voxelLight.radiance.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .sampledImage(10, voxelAlbedo.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .sampledImage(11, voxelNormal.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);

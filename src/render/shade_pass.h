@@ -5,6 +5,7 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/gbuffer_pass.h"
+#include "render/inject_pass.h"
 #include "render/shadow_pass.h"
 
 namespace vct {
@@ -21,7 +22,7 @@ struct ShadePass {
 
     // Leaves `radiance` in SHADER_READ_ONLY_OPTIMAL.
     void record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
-                const ShadowPass& shadows, const GpuImage& voxelRadiance, const GpuImage& voxelAlbedo,
+                const ShadowPass& shadows, const InjectPass& voxelLight, const GpuImage& voxelAlbedo,
                 const GpuImage& voxelNormal);
 
     uint32_t width, height;

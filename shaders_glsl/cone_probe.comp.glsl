@@ -1,0 +1,37 @@
+#version 460
+// Traces given cones through a radiance volume and writes what they gather: lets the tests
+// check the cone tracer on volumes with known answers, apart from voxelization and injection.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.h"
+
+layout(local_size_x = 64) in;
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 12) uniform sampler3D voxelPosX;
+layout(set = 0, binding = 13) uniform sampler3D voxelNegX;
+layout(set = 0, binding = 14) uniform sampler3D voxelPosY;
+layout(set = 0, binding = 15) uniform sampler3D voxelNegY;
+layout(set = 0, binding = 16) uniform sampler3D voxelPosZ;
+layout(set = 0, binding = 17) uniform sampler3D voxelNegZ;
+
+struct ConeProbe {
+    vec4 origin;     // xyz world, w 1 = the diffuse cone set around `direction`, 0 = one cone
+    vec4 direction;  // xyz unit direction (the normal for a diffuse set), w tan(half-aperture)
+};
+layout(std430, set = 0, binding = 2) readonly buffer Probes { ConeProbe probes[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer Results { vec4 results[]; };  // radiance, occlusion
+layout(push_constant) uniform Push { uint probeCount; };
+
+#include "cone_tracing.glsl"
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= probeCount) return;
+    ConeProbe probe = probes[index];
+    if (probe.origin.w > 0.5f) {
+        results[index] = traceDiffuseCones(probe.origin.xyz, probe.direction.xyz);
+    } else {
+        ConeResult cone = traceCone(probe.origin.xyz, probe.direction.xyz, probe.direction.w);
+        results[index] = vec4(cone.radiance, cone.occlusion);
+    }
+}
