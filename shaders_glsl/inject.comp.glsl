@@ -2,6 +2,9 @@
 // Light injection: the outgoing radiance of every occupied voxel, from the direct light it
 // receives (with shadow-map visibility) reflected diffusely, plus its emission. Written to
 // level 0 of the radiance volume as radiance × scale premultiplied by opacity.
+// With gatherBounce = 1 (the second bounce), each voxel also reflects the light its diffuse
+// cones gather from the first bounce's volume; it then writes to a separate image, since the
+// cones read the volume it would otherwise overwrite.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
@@ -16,7 +19,16 @@ layout(set = 0, binding = 5, rgba8) uniform readonly image3D voxelAlbedo;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
 layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
+layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 12) uniform sampler3D voxelPosX;
+layout(set = 0, binding = 13) uniform sampler3D voxelNegX;
+layout(set = 0, binding = 14) uniform sampler3D voxelPosY;
+layout(set = 0, binding = 15) uniform sampler3D voxelNegY;
+layout(set = 0, binding = 16) uniform sampler3D voxelPosZ;
+layout(set = 0, binding = 17) uniform sampler3D voxelNegZ;
+layout(push_constant) uniform Push { uint gatherBounce; };
 
+#include "cone_tracing.glsl"
 #include "direct_light.glsl"
 
 void main() {
@@ -49,6 +61,11 @@ void main() {
         irradiance += incident * cosine * visibility;
     }
     vec3 outgoing = albedoOpacity.rgb * (1.0f / PI) * irradiance + imageLoad(voxelEmission, voxel).rgb;
+    if (gatherBounce != 0u && normalLength > 0.25f) {
+        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). Cones start two voxels out, past the voxel itself.
+        vec3 normal = normalSum / normalLength;
+        outgoing += albedoOpacity.rgb * traceDiffuseCones(center + normal * (2.0f * voxelSize), normal).rgb;
+    }
     float opacity = albedoOpacity.a;
     imageStore(radiance, voxel, vec4(outgoing * frame.coneWeights.w * opacity, opacity));
 }

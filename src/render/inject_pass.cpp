@@ -7,16 +7,29 @@
 
 namespace vct {
 
-InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution, bool anisotropic)
+InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution, bool anisotropic, uint32_t bounces)
     : resolution(voxelResolution), context_(context) {
     ImageDesc desc;
     desc.type = VK_IMAGE_TYPE_3D;
     desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     desc.extent = {resolution, resolution, resolution};
     desc.mipLevels = voxelMipCount(resolution);
-    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     desc.debugName = "voxel radiance";
     radiance = GpuImage(context, desc);
+    if (bounces >= 2) {
+        ImageDesc bounceDesc = desc;
+        bounceDesc.mipLevels = 1;
+        bounceDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        bounceDesc.debugName = "voxel radiance, second bounce";
+        bounceTarget = GpuImage(context, bounceDesc);
+    }
+    VkSamplerCreateInfo samplerInfo = linearClampSampler();
+    samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    samplerInfo.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    volumeSampler = Sampler(context, samplerInfo);
     if (anisotropic) {
         const char* names[6] = {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y",
                                 "voxel radiance -y", "voxel radiance +z", "voxel radiance -z"};
@@ -39,8 +52,15 @@ InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution, bool aniso
                   {5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
                   {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
                   {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
-                  {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute}});
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
+                  {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
+                  {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {12, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {13, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {14, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                  {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute}});
+    VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
     pipeline = Pipeline(context, createComputePipeline(context, layout, "inject.comp"), layout, setLayout);
 }
 
@@ -48,9 +68,43 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuf
                         const ShadowPass& shadows, const VoxelizePass& voxels) {
     // Level 0 is rewritten whole; the previous frame's cone tracing must be done reading it.
     prepareLayouts(commands);
+    dispatch(commands, frameConstants, lights, shadowViews, shadows, voxels,
+             radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0], 0u);
+}
+
+void InjectPass::recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights,
+                              VkBuffer shadowViews, const ShadowPass& shadows, const VoxelizePass& voxels) {
+    imageBarrier(commands, bounceTarget.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    dispatch(commands, frameConstants, lights, shadowViews, shadows, voxels, bounceTarget.view, 1u);
+    // The bounce's level 0 replaces the first bounce's; every texel is written.
+    imageBarrier(commands, bounceTarget.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 0, 1);
+    VkImageCopy region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.extent = {resolution, resolution, resolution};
+    vkCmdCopyImage(commands, bounceTarget.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, radiance.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, 0, 1);
+}
+
+void InjectPass::dispatch(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+                          const ShadowPass& shadows, const VoxelizePass& voxels, VkImageView target,
+                          uint32_t gatherBounce) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
-    DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+    DescriptorPush push;
+    for (uint32_t direction = 0; direction < 6; ++direction)
+        push.sampledImage(12 + direction, directionalView(direction), volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL);
+    push.buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
         .buffer(1, lights)
         .buffer(2, shadowViews)
         .sampledImage(3, shadows.sunMaps.view, shadows.compareSampler.sampler)
@@ -58,8 +112,10 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuf
         .storageImage(5, voxels.albedoOpacity.view)
         .storageImage(6, voxels.normal.view)
         .storageImage(7, voxels.emission.view)
-        .storageImage(8, radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0])
+        .storageImage(8, target)
+        .sampledImage(9, radiance.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+    vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(gatherBounce), &gatherBounce);
     const uint32_t groups = (resolution + 3) / 4;
     vkCmdDispatch(commands, groups, groups, groups);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

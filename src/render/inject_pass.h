@@ -10,11 +10,16 @@
 namespace vct {
 
 struct InjectPass {
-    InjectPass(GpuContext& context, uint32_t resolution, bool anisotropic);
+    InjectPass(GpuContext& context, uint32_t resolution, bool anisotropic, uint32_t bounces);
 
     // Writes level 0 of `radiance`. Leaves it in GENERAL, visible to the mip pass.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
                 const ShadowPass& shadows, const VoxelizePass& voxels);
+    // The second bounce: injects again, adding what each voxel's cones gather from the current
+    // (first-bounce, mipmapped) volume, and replaces level 0 with the result. The mips must be
+    // rebuilt afterwards.
+    void recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+                      const ShadowPass& shadows, const VoxelizePass& voxels);
 
     // Puts the volumes in GENERAL (from UNDEFINED the first time) after earlier reads.
     void prepareLayouts(VkCommandBuffer commands);
@@ -25,6 +30,8 @@ struct InjectPass {
     // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
     // down (level 0 is shared); empty when the voxels are isotropic.
     std::vector<GpuImage> directional;
+    GpuImage bounceTarget;  // level 0 of the second bounce (only with bounces = 2)
+    Sampler volumeSampler;
     Pipeline pipeline;
 
     // The view each of the six directional bindings gets (the isotropic volume stands in when
@@ -35,6 +42,9 @@ struct InjectPass {
     bool initialized = false;
 
 private:
+    void dispatch(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+                  const ShadowPass& shadows, const VoxelizePass& voxels, VkImageView target, uint32_t gatherBounce);
+
     GpuContext& context_;
 };
 

@@ -50,7 +50,7 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-      injectPass_(context, settings.voxelResolution, settings.anisotropicVoxels),
+      injectPass_(context, settings.voxelResolution, settings.anisotropicVoxels, settings.bounces),
       mipsPass_(context),
       timer_(context) {
     setGeometry(scene);
@@ -182,6 +182,14 @@ FrameStats Renderer::renderFrame() {
             mipsPass_.record(commands, injectPass_.radiance);
             mipsPass_.recordDirectional(commands, injectPass_.radiance, injectPass_.directional);
             timer_.end(commands);
+            if (settings_.bounces >= 2) {
+                timer_.begin(commands, "bounce");
+                injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
+                                         shadowViewsBuffer_.buffer, *shadowPass_, *voxelizePass_);
+                mipsPass_.record(commands, injectPass_.radiance);
+                mipsPass_.recordDirectional(commands, injectPass_.radiance, injectPass_.directional);
+                timer_.end(commands);
+            }
         } else if (!injectPass_.initialized) {
             // Nothing voxelized or injected yet: the shading pass still binds the voxel images
             // (without reading them), so give them a layout.
@@ -256,6 +264,7 @@ uint64_t Renderer::deviceMemoryBytes() const {
           &voxelizePass_->albedoOpacity, &voxelizePass_->normal, &voxelizePass_->emission, &injectPass_.radiance})
         bytes += image->memorySize;
     for (const GpuImage& chain : injectPass_.directional) bytes += chain.memorySize;
+    bytes += injectPass_.bounceTarget.memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{&sceneGpu_->vertices, &sceneGpu_->indices,
                                  &sceneGpu_->triangleMaterials,

@@ -144,5 +144,23 @@ TEST_F(Frame, ColourBleedsFromTheRedAndGreenWalls) {
     EXPECT_GT(leftRed + leftGreen + rightRed + rightGreen, 0.0);
 }
 
+TEST_F(Frame, SecondBounceAddsLightAndRunsOnlyWithTheInjection) {
+    RenderSettings settings = smallSettings();
+    settings.mode = RenderMode::Indirect;
+    Renderer oneBounce(gpu(), scene, settings);
+    oneBounce.renderFrame();
+    settings.bounces = 2;
+    Renderer twoBounces(gpu(), scene, settings);
+    EXPECT_TRUE(twoBounces.renderFrame().ran("bounce"));
+    EXPECT_FALSE(twoBounces.renderFrame().ran("bounce")) << "nothing changed";
+    double one = 0, two = 0;
+    for (float value : oneBounce.readImage().rgb) one += value;
+    for (float value : twoBounces.readImage().rgb) {
+        ASSERT_TRUE(std::isfinite(value));
+        two += value;
+    }
+    EXPECT_GT(two, one * 1.05) << "a second bounce adds light";
+}
+
 }  // namespace
 }  // namespace vct::test
