@@ -46,7 +46,7 @@ vec3 directLight(SurfacePoint surface, uint flags) {
         vec3 irradiance = incidentLight(light, surface.position, toLight, distanceToLight);
         float NdotL = dot(surface.normal, toLight);
         if (NdotL <= 0.0f || dot(irradiance, irradiance) <= 0.0f) continue;
-        float visibility = shadowVisibility(light, surface.position, surface.normal, distanceToLight);
+        float visibility = shadowVisibility(light, surface.position, surface.normal, distanceToLight, true);
         if (visibility <= 0.0f) continue;
 
         vec3 H = normalize(surface.toViewer + toLight);

@@ -57,7 +57,7 @@ void main() {
         if (cosine <= 0.0f) continue;
         // The voxel centre can lie behind its surface: look the shadow up one voxel along the normal.
         vec3 lookup = center + normal * voxelSize;
-        float visibility = shadowVisibility(light, lookup, normal, distanceToLight);
+        float visibility = shadowVisibility(light, lookup, normal, distanceToLight, false);
         irradiance += incident * cosine * visibility;
     }
     vec3 outgoing = albedoOpacity.rgb * (1.0f / PI) * irradiance + imageLoad(voxelEmission, voxel).rgb;

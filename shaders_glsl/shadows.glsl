@@ -20,7 +20,9 @@ float sampleShadowMap(uint array, vec4 coordinate) {
 // Fraction of the light's view that reaches `position` (1 = lit). The position is pushed along
 // the normal by a few shadow-map texels (normal-offset shadows) on top of the slope-scaled
 // depth bias the shadow pass applies, which removes acne without detaching shadows.
-float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanceToLight) {
+// `filtered` = false takes one bilinear comparison instead of 25: enough for a voxel, whose
+// footprint is far wider than the kernel.
+float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanceToLight, bool filtered) {
     uint viewCount = uint(light.spotShadow.w);
     if (viewCount == 0u || (frame.counts.z & USE_SHADOWS) == 0u) return 1.0f;
     uint viewIndex = uint(light.spotShadow.z);
@@ -36,6 +38,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     if (any(lessThan(uv, vec2(0.0f))) || any(greaterThan(uv, vec2(1.0f))) || ndc.z > 1.0f) return 1.0f;
 
     uint array = uint(view.params.x);
+    if (!filtered) return sampleShadowMap(array, vec4(uv, view.params.y, ndc.z));
     vec2 texel = 1.0f / vec2(array == 0u ? textureSize(sunShadowMaps, 0).xy : textureSize(localShadowMaps, 0).xy);
     float radius = frame.shading.z;
     float lit = 0.0f;
