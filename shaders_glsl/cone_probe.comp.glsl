@@ -7,12 +7,7 @@
 layout(local_size_x = 64) in;
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1) uniform sampler3D voxelRadiance;
-layout(set = 0, binding = 12) uniform sampler3D voxelPosX;
-layout(set = 0, binding = 13) uniform sampler3D voxelNegX;
-layout(set = 0, binding = 14) uniform sampler3D voxelPosY;
-layout(set = 0, binding = 15) uniform sampler3D voxelNegY;
-layout(set = 0, binding = 16) uniform sampler3D voxelPosZ;
-layout(set = 0, binding = 17) uniform sampler3D voxelNegZ;
+#include "directional_voxels.glsl"
 
 struct ConeProbe {
     vec4 origin;     // xyz world, w 1 = the diffuse cone set around `direction`, 0 = one cone

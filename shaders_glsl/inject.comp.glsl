@@ -20,12 +20,7 @@ layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
 layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
-layout(set = 0, binding = 12) uniform sampler3D voxelPosX;
-layout(set = 0, binding = 13) uniform sampler3D voxelNegX;
-layout(set = 0, binding = 14) uniform sampler3D voxelPosY;
-layout(set = 0, binding = 15) uniform sampler3D voxelNegY;
-layout(set = 0, binding = 16) uniform sampler3D voxelPosZ;
-layout(set = 0, binding = 17) uniform sampler3D voxelNegZ;
+#include "directional_voxels.glsl"
 layout(push_constant) uniform Push { uint gatherBounce; };
 
 #include "cone_tracing.glsl"

@@ -15,12 +15,7 @@ layout(set = 0, binding = 8) uniform sampler2D gBaseColor;
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
 layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
-layout(set = 0, binding = 12) uniform sampler3D voxelPosX;
-layout(set = 0, binding = 13) uniform sampler3D voxelNegX;
-layout(set = 0, binding = 14) uniform sampler3D voxelPosY;
-layout(set = 0, binding = 15) uniform sampler3D voxelNegY;
-layout(set = 0, binding = 16) uniform sampler3D voxelPosZ;
-layout(set = 0, binding = 17) uniform sampler3D voxelNegZ;
+#include "directional_voxels.glsl"
 
 #include "cone_tracing.glsl"
 #include "debug_views.glsl"

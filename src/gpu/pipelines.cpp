@@ -244,4 +244,11 @@ VkSamplerCreateInfo linearClampSampler() {
     return info;
 }
 
+VkSamplerCreateInfo volumeSampler() {
+    VkSamplerCreateInfo info = linearClampSampler();
+    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    return info;
+}
+
 }  // namespace vct

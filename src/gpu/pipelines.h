@@ -105,5 +105,7 @@ private:
 
 VkSamplerCreateInfo nearestClampSampler();
 VkSamplerCreateInfo linearClampSampler();
+// Trilinear, transparent black outside: for voxel volumes, where outside the grid is empty space.
+VkSamplerCreateInfo volumeSampler();
 
 }  // namespace vct

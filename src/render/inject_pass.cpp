@@ -25,11 +25,7 @@ InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution, bool aniso
         bounceDesc.debugName = "voxel radiance, second bounce";
         bounceTarget = GpuImage(context, bounceDesc);
     }
-    VkSamplerCreateInfo samplerInfo = linearClampSampler();
-    samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    samplerInfo.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-    volumeSampler = Sampler(context, samplerInfo);
+    volumeSampler = Sampler(context, vct::volumeSampler());
     if (anisotropic) {
         const char* names[6] = {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y",
                                 "voxel radiance -y", "voxel radiance +z", "voxel radiance -z"};

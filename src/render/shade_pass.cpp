@@ -13,11 +13,7 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
     desc.debugName = "radiance";
     radiance = GpuImage(context, desc);
     pointSampler = Sampler(context, nearestClampSampler());
-    VkSamplerCreateInfo volumeInfo = linearClampSampler();
-    volumeInfo.addressModeU = volumeInfo.addressModeV = volumeInfo.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    volumeInfo.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-    volumeSampler = Sampler(context, volumeInfo);
+    volumeSampler = Sampler(context, vct::volumeSampler());
 
     const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;

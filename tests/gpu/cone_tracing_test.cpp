@@ -2,6 +2,7 @@
 // from voxelization and light injection (Crassin et al. 2011, sections 3–4).
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <random>
 
 #include <glm/gtc/packing.hpp>
@@ -11,6 +12,7 @@
 #include "gpu/readback.h"
 #include "gpu_test.h"
 #include "gpu_types.h"
+#include "render/inject_pass.h"
 #include "render/mips_pass.h"
 #include "render/voxel_grid_fit.h"
 
@@ -30,24 +32,15 @@ class ConeTracing : public GpuTest {
 protected:
     void SetUp() override {
         GpuTest::SetUp();
-        ImageDesc desc;
-        desc.type = VK_IMAGE_TYPE_3D;
-        desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-        desc.extent = {kResolution, kResolution, kResolution};
-        desc.mipLevels = voxelMipCount(kResolution);
-        desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        desc.debugName = "test radiance";
-        volume = GpuImage(gpu(), desc);
-        ImageDesc directionalDesc = desc;
-        directionalDesc.extent = {kResolution / 2, kResolution / 2, kResolution / 2};
-        directionalDesc.mipLevels = desc.mipLevels - 1;
-        for (int direction = 0; direction < 6; ++direction) directional.push_back(GpuImage(gpu(), directionalDesc));
+        // The renderer's own volumes (level 0 + mips, six directional chains); level 0 is filled here.
+        volumes = std::make_unique<InjectPass>(gpu(), kResolution, true, 1);
         voxels.assign(size_t(kResolution) * kResolution * kResolution, glm::vec4(0.0f));
         // The grid spans [0, 64]³ in world units: one voxel = one unit.
         grid.originVoxelSize = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-        grid.resolution = glm::uvec4(kResolution, desc.mipLevels, 0, 0);
+        grid.resolution = glm::uvec4(kResolution, voxelMipCount(kResolution), 0, 0);
     }
+
+    const GpuImage& volume() const { return volumes->radiance; }
 
     glm::vec4& voxel(int x, int y, int z) { return voxels[size_t(x) + kResolution * (size_t(y) + kResolution * z)]; }
 
@@ -60,23 +53,23 @@ protected:
         std::memcpy(staging.mapped, halves.data(), halves.size() * 2);
         MipsPass mips(gpu());
         submitAndWait(gpu(), [&](VkCommandBuffer commands) {
-            imageBarrier(commands, volume.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            imageBarrier(commands, volume().image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {kResolution, kResolution, kResolution};
-            vkCmdCopyBufferToImage(commands, staging.buffer, volume.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+            vkCmdCopyBufferToImage(commands, staging.buffer, volume().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                                    &region);
-            imageBarrier(commands, volume.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            imageBarrier(commands, volume().image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                          VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-            for (const GpuImage& chain : directional)
+            for (const GpuImage& chain : volumes->directional)
                 imageBarrier(commands, chain.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                              VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-            mips.record(commands, volume);
-            mips.recordDirectional(commands, volume, directional);
+            mips.record(commands, volume());
+            mips.recordDirectional(commands, volume(), volumes->directional);
         });
     }
 
@@ -98,11 +91,7 @@ protected:
         Buffer probeBuffer(context, probes.size() * sizeof(Probe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         std::memcpy(probeBuffer.mapped, probes.data(), probes.size() * sizeof(Probe));
         Buffer results(context, probes.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-        VkSamplerCreateInfo samplerInfo = linearClampSampler();
-        samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
-            VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-        samplerInfo.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-        Sampler sampler(context, samplerInfo);
+        Sampler sampler(context, volumeSampler());
         const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
         VkDescriptorSetLayout setLayout =
             createPushDescriptorLayout(context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
@@ -122,9 +111,10 @@ protected:
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
             DescriptorPush push;
             for (uint32_t direction = 0; direction < 6; ++direction)
-                push.sampledImage(12 + direction, directional[direction].view, sampler.sampler, VK_IMAGE_LAYOUT_GENERAL);
+                push.sampledImage(12 + direction, volumes->directionalView(direction), sampler.sampler,
+                                  VK_IMAGE_LAYOUT_GENERAL);
             push.buffer(0, frame.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-                .sampledImage(1, volume.view, sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+                .sampledImage(1, volume().view, sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
                 .buffer(2, probeBuffer.buffer)
                 .buffer(3, results.buffer)
                 .push(context, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
@@ -135,8 +125,7 @@ protected:
         return std::vector<glm::vec4>(mapped, mapped + count);
     }
 
-    GpuImage volume;
-    std::vector<GpuImage> directional;
+    std::unique_ptr<InjectPass> volumes;
     std::vector<glm::vec4> voxels;
     glsl::VoxelGridParams grid{};
     float coneStep = 0.5f;
@@ -167,7 +156,7 @@ TEST_F(ConeTracing, MipsEqualCpuDownsampleWithinFloat16Rounding) {
                     coarser[x + size * (y + size * z)] = sum * 0.125f;
                 }
         expected = coarser;
-        const std::vector<glm::vec4> actual = readImage3D(gpu(), volume, level, VK_IMAGE_LAYOUT_GENERAL);
+        const std::vector<glm::vec4> actual = readImage3D(gpu(), volume(), level, VK_IMAGE_LAYOUT_GENERAL);
         ASSERT_EQ(actual.size(), expected.size());
         for (size_t i = 0; i < actual.size(); ++i)
             for (int c = 0; c < 4; ++c)  // each level rounds to float16 once more: allow a few ulps
