@@ -1,0 +1,48 @@
+// The viewer's present pass: tone-maps the renderer's image onto a swapchain image inside a
+// VkRenderPass (Dear ImGui 1.86's Vulkan backend draws into a render pass, so it shares this one).
+//
+//   begin(): render pass begins, full-screen triangle with tonemap.frag → caller draws the UI → end()
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+#include "view/swapchain.h"
+
+namespace vct {
+
+struct TonemapParams {
+    float exposure = 1.0f;
+    bool toneCurve = true;  // false for debug views whose values are colours already
+};
+
+class PresentPass {
+public:
+    PresentPass(GpuContext& context, VkFormat swapchainFormat);
+    ~PresentPass();
+    PresentPass(const PresentPass&) = delete;
+    PresentPass& operator=(const PresentPass&) = delete;
+
+    // One framebuffer per swapchain image; call again after the swapchain was recreated.
+    void createFramebuffers(const Swapchain& swapchain);
+
+    // `radiance` is in GENERAL layout, written by earlier submissions (the renderer's frame).
+    void begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, const GpuImage& radiance,
+               const TonemapParams& params);
+    void end(VkCommandBuffer commands);
+
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    VkFormat format;
+
+private:
+    void destroyFramebuffers();
+    GpuContext& context_;
+    Pipeline tonemap_;
+    Sampler sampler_;
+    std::vector<VkFramebuffer> framebuffers_;
+};
+
+}  // namespace vct

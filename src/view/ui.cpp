@@ -1,0 +1,273 @@
+#include "view/ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+#include <vector>
+
+#include "render/presets.h"
+#include "scene/load.h"
+
+namespace vct {
+
+void FrameHistory::add(float frameMs, const FrameStats& stats) {
+    frameMilliseconds.push_back(frameMs);
+    gpuMilliseconds.push_back(float(stats.gpuMilliseconds()));
+    while (frameMilliseconds.size() > length) frameMilliseconds.pop_front();
+    while (gpuMilliseconds.size() > length) gpuMilliseconds.pop_front();
+    // Exponential moving average over roughly the last 20 frames each pass ran in.
+    for (const PassTime& pass : stats.passes) {
+        auto found = passAverage.find(pass.name);
+        if (found == passAverage.end()) passAverage[pass.name] = float(pass.milliseconds);
+        else found->second += 0.05f * (float(pass.milliseconds) - found->second);
+    }
+    lastFrameIdle = stats.passes.empty() && !stats.skipped.empty();
+    if (!lastFrameIdle) last = stats;
+}
+
+float FrameHistory::averageFrameMilliseconds() const {
+    if (frameMilliseconds.empty()) return 0.0f;
+    const size_t count = std::min<size_t>(frameMilliseconds.size(), 30);
+    float sum = 0.0f;
+    for (size_t i = frameMilliseconds.size() - count; i < frameMilliseconds.size(); ++i) sum += frameMilliseconds[i];
+    return sum / float(count);
+}
+
+bool needsNewRenderer(const RenderSettings& current, const RenderSettings& wanted) {
+    return current.voxelResolution != wanted.voxelResolution || current.sunShadowMapSize != wanted.sunShadowMapSize ||
+           current.localShadowMapSize != wanted.localShadowMapSize || current.supersample != wanted.supersample ||
+           current.anisotropicVoxels != wanted.anisotropicVoxels || current.bounces != wanted.bounces;
+}
+
+// A power-of-two choice shown as a combo box ("64", "128", ...).
+static void powerOfTwoCombo(const char* label, uint32_t& value, uint32_t smallest, uint32_t largest) {
+    char current[16];
+    std::snprintf(current, sizeof current, "%u", value);
+    if (!ImGui::BeginCombo(label, current)) return;
+    for (uint32_t option = smallest; option <= largest; option *= 2) {
+        char text[16];
+        std::snprintf(text, sizeof text, "%u", option);
+        if (ImGui::Selectable(text, option == value)) value = option;
+    }
+    ImGui::EndCombo();
+}
+
+static void sceneSection(ViewerState& state) {
+    if (!ImGui::CollapsingHeader("Scene")) return;
+    ImGui::Text("%s", state.sceneName.c_str());
+    for (const std::string& name : builtinSceneNames()) {
+        if (ImGui::Button(name.c_str())) state.requestedScene = name;
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    ImGui::InputText("glTF path", state.scenePathField, sizeof state.scenePathField);
+    ImGui::SameLine();
+    if (ImGui::Button("Load") && state.scenePathField[0] != '\0') state.requestedScene = state.scenePathField;
+    ImGui::TextDisabled("or drop a .gltf/.glb file on the window");
+    if (!state.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", state.error.c_str());
+}
+
+static void lightSection(ViewerState& state) {
+    if (!ImGui::CollapsingHeader("Sun", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::SliderFloat("azimuth", &state.sun.azimuthDegrees, 0.0f, 360.0f, "%.0f deg");
+    ImGui::SliderFloat("elevation", &state.sun.elevationDegrees, -89.0f, 89.0f, "%.0f deg");
+    ImGui::SliderFloat("intensity (lux)", &state.sun.intensity, 0.0f, 20.0f, "%.2f");
+    ImGui::Checkbox("animate (L)", &state.sun.animate);
+    ImGui::SliderFloat("animation speed", &state.sun.animateDegreesPerSecond, -90.0f, 90.0f, "%.0f deg/s");
+}
+
+static void shadingSection(ViewerState& state, const UiFacts& facts) {
+    RenderSettings& settings = state.settings;
+    if (!ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::SliderFloat("exposure", &state.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    int mode = int(settings.mode);
+    ImGui::Combo("mode (M)", &mode, "full\0direct\0indirect\0");
+    settings.mode = RenderMode(mode);
+    Components& c = settings.components;
+    ImGui::Checkbox("1 direct diffuse", &c.directDiffuse);
+    ImGui::SameLine(165);
+    ImGui::Checkbox("2 direct specular", &c.directSpecular);
+    ImGui::Checkbox("3 indirect diffuse", &c.indirectDiffuse);
+    ImGui::SameLine(165);
+    ImGui::Checkbox("4 indirect specular", &c.indirectSpecular);
+    ImGui::Checkbox("5 ambient occlusion", &c.ambientOcclusion);
+    ImGui::SameLine(165);
+    ImGui::Checkbox("6 emission", &c.emission);
+    ImGui::Checkbox("7 shadows", &c.shadows);
+    ImGui::SliderFloat("ambient", &settings.ambientFactor, 0.0f, 1.0f, "%.3f");
+    int view = int(settings.debugView);
+    ImGui::Combo("view (V)", &view,
+                 "lit image\0base colour\0normal\0depth\0ambient occlusion\0voxel albedo\0voxel normal\0"
+                 "voxel radiance\0");
+    settings.debugView = DebugView(view);
+    int mip = int(settings.debugVoxelMip);
+    ImGui::SliderInt("voxel mip", &mip, 0, int(facts.voxelMips) - 1);
+    settings.debugVoxelMip = uint32_t(std::clamp(mip, 0, int(facts.voxelMips) - 1));
+}
+
+static void coneSection(RenderSettings& settings) {
+    if (!ImGui::CollapsingHeader("Cones")) return;
+    int cones = int(settings.diffuseConeCount);
+    ImGui::SliderInt("diffuse cones", &cones, 1, 16);
+    settings.diffuseConeCount = uint32_t(cones);
+    ImGui::SliderFloat("aperture", &settings.diffuseConeAperture, 5.0f, 120.0f, "%.0f deg");
+    ImGui::SliderFloat("centre weight", &settings.diffuseCentreWeight, 0.0f, 1.0f);
+    ImGui::SliderFloat("step", &settings.coneStep, 0.1f, 2.0f, "%.2f diameters");
+    ImGui::SliderFloat("max distance", &settings.coneMaxDistance, 0.05f, 1.5f, "%.2f grid");
+    ImGui::SliderFloat("start offset", &settings.coneStartOffset, 0.0f, 4.0f, "%.2f voxels");
+    ImGui::SliderFloat("stop opacity", &settings.coneStopOpacity, 0.5f, 1.0f);
+    ImGui::SliderFloat("AO falloff", &settings.aoFalloff, 0.0f, 32.0f);
+    ImGui::Checkbox("skip empty space", &settings.skipEmptySpace);
+}
+
+static void resolutionSection(ViewerState& state) {
+    RenderSettings& settings = state.settings;
+    if (!ImGui::CollapsingHeader("Resolution (rebuilds the renderer)")) return;
+    powerOfTwoCombo("voxels", settings.voxelResolution, 32, 512);
+    powerOfTwoCombo("sun shadow map", settings.sunShadowMapSize, 256, 8192);
+    powerOfTwoCombo("local shadow map", settings.localShadowMapSize, 128, 4096);
+    int supersample = int(settings.supersample);
+    ImGui::SliderInt("supersample", &supersample, 1, 4);
+    settings.supersample = uint32_t(supersample);
+    ImGui::Checkbox("anisotropic voxels", &settings.anisotropicVoxels);
+    bool secondBounce = settings.bounces >= 2;
+    ImGui::Checkbox("second bounce", &secondBounce);
+    settings.bounces = secondBounce ? 2 : 1;
+}
+
+static void presetRow(ViewerState& state) {
+    ImGui::Text("presets:");
+    for (const auto& [name, preset] : renderPresets()) {
+        ImGui::SameLine();
+        if (!ImGui::Button(name.c_str())) continue;
+        // A preset brings its quality settings; the view (mode, toggles, debug view) stays.
+        RenderSettings applied = preset;
+        applied.width = state.settings.width;
+        applied.height = state.settings.height;
+        applied.mode = state.settings.mode;
+        applied.components = state.settings.components;
+        applied.debugView = state.settings.debugView;
+        applied.debugVoxelMip = 0;
+        state.settings = applied;
+    }
+}
+
+void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(330, 0), ImVec2(330, float(facts.height) - 16.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushItemWidth(160);
+    presetRow(state);
+    sceneSection(state);
+    lightSection(state);
+    shadingSection(state, facts);
+    coneSection(state.settings);
+    resolutionSection(state);
+    if (ImGui::CollapsingHeader("Camera and window")) {
+        ImGui::Text("%s mode (O toggles), fly speed %.2f m/s", state.cameraIsOrbiting ? "orbit" : "fly",
+                    state.cameraSpeed);
+        if (ImGui::Button("reset camera (R)")) state.requestCameraReset = true;
+        ImGui::Checkbox("vsync", &state.vsync);
+        ImGui::Checkbox("screenshots include the UI", &state.screenshotWithUi);
+        if (ImGui::Button("screenshot (F12)")) state.requestScreenshot = true;
+    }
+    if (!state.notice.empty()) ImGui::TextWrapped("%s", state.notice.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+void drawProfilerWindow(const ViewerState& state, const UiFacts& facts) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Size.x - 8.0f, 8.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("Profiler", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    const FrameHistory& history = state.history;
+    const float average = history.averageFrameMilliseconds();
+    ImGui::Text("frame %.1f ms (%.1f fps), averaged", average, average > 0.0f ? 1000.0f / average : 0.0f);
+    const std::vector<float> frames(history.frameMilliseconds.begin(), history.frameMilliseconds.end());
+    const std::vector<float> gpu(history.gpuMilliseconds.begin(), history.gpuMilliseconds.end());
+    if (!frames.empty()) {
+        ImGui::PlotLines("frame ms", frames.data(), int(frames.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(240, 40));
+        ImGui::PlotLines("GPU ms", gpu.data(), int(gpu.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(240, 40));
+    }
+    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("last drawn");
+        ImGui::TableSetupColumn("average");
+        ImGui::TableHeadersRow();
+        for (const auto& [name, averageMs] : history.passAverage) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(name.c_str());
+            ImGui::TableNextColumn();
+            bool ran = false;
+            for (const PassTime& pass : history.last.passes)
+                if (pass.name == name) {
+                    ImGui::Text("%8.2f ms", pass.milliseconds);
+                    ran = true;
+                }
+            if (!ran) ImGui::TextDisabled("skipped");
+            ImGui::TableNextColumn();
+            ImGui::Text("%8.2f ms", averageMs);
+        }
+        ImGui::EndTable();
+    }
+    if (history.lastFrameIdle) ImGui::TextDisabled("this frame: nothing changed, image reused");
+    ImGui::Text("present (tone map + UI) %.2f ms GPU", history.presentMilliseconds);
+    ImGui::Separator();
+    ImGui::Text("%ux%u, %s", facts.width, facts.height, facts.presentMode.c_str());
+    ImGui::Text("voxels %u^3 = %.1f M, %u mips", facts.voxelResolution,
+                double(facts.voxelResolution) * facts.voxelResolution * facts.voxelResolution / 1e6, facts.voxelMips);
+    ImGui::Text("%zu triangles, %zu lights", facts.triangles, facts.lights);
+    ImGui::Text("device memory %.1f MiB", double(facts.deviceMemoryBytes) / (1024.0 * 1024.0));
+    ImGui::TextDisabled("%s", facts.deviceName.c_str());
+    ImGui::End();
+}
+
+void drawGuideWindow(ViewerState& state) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y - 8.0f), ImGuiCond_Always,
+                            ImVec2(0.5f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    // No inputs: the guide never takes the mouse from the camera.
+    ImGui::Begin("Guide (F1 or H hides it)", &state.showGuide,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoCollapse);
+    static const char* const rows[][2] = {
+        {"right mouse + drag", "look around"},
+        {"W A S D", "fly forward, left, back, right (hold right mouse or not)"},
+        {"Q / E", "down / up"},
+        {"Shift", "4x faster"},
+        {"mouse wheel", "fly speed; zoom in orbit mode"},
+        {"O", "orbit around the scene centre (drag with either button)"},
+        {"R", "reset to the scene camera"},
+        {"arrow keys", "move the sun (left/right azimuth, up/down elevation)"},
+        {"Ctrl + left drag", "move the sun"},
+        {"1 .. 7", "toggle direct diffuse, direct specular, indirect diffuse,"},
+        {"", "indirect specular, ambient occlusion, emission, shadows"},
+        {"M", "mode: full, direct, indirect"},
+        {"V", "next view: lit, base colour, normal, depth, AO, voxels"},
+        {"[ / ]", "voxel mip shown by the voxel views"},
+        {"L", "animate the sun"},
+        {"F12 or P", "screenshot (PNG in the current folder)"},
+        {"Tab", "hide or show the panels"},
+        {"F1 or H", "this guide"},
+        {"drop a file", "load a .gltf/.glb scene"},
+        {"Esc", "quit"},
+    };
+    if (ImGui::BeginTable("controls", 2, ImGuiTableFlags_SizingFixedFit)) {
+        for (const auto& row : rows) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", row[0]);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(row[1]);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace vct

@@ -1,0 +1,706 @@
+#include "view/viewer.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+#include <stb/stb_image_write.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+
+#include "error.h"
+#include "gpu/commands.h"
+#include "gpu/timing.h"
+#include "gpu/vk_check.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "scene/load.h"
+#include "view/controls.h"
+#include "view/present_pass.h"
+#include "view/swapchain.h"
+#include "view/ui.h"
+#include "view/viewer_state.h"
+
+namespace vct {
+namespace {
+
+// ---- Ownership of the window-side objects, destroyed in reverse order of creation.
+
+struct GlfwSession {
+    GlfwSession() {
+        glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
+        if (!glfwInit()) throw Error("cannot open a window: GLFW found no display (set DISPLAY, or run under xvfb-run)");
+        if (!glfwVulkanSupported()) {
+            glfwTerminate();
+            throw Error("cannot open a window: GLFW found no Vulkan loader with surface support");
+        }
+    }
+    ~GlfwSession() { glfwTerminate(); }
+};
+
+struct Window {
+    Window(uint32_t width, uint32_t height) {
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+        glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+        handle = glfwCreateWindow(int(width), int(height), "vct view", nullptr, nullptr);
+        if (!handle) throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " window");
+    }
+    ~Window() { glfwDestroyWindow(handle); }
+    GLFWwindow* handle = nullptr;
+};
+
+struct Surface {
+    Surface(GpuContext& context, GLFWwindow* window) : instance(context.instance) {
+        VK_CHECK(glfwCreateWindowSurface(instance, window, nullptr, &surface));
+    }
+    ~Surface() { vkDestroySurfaceKHR(instance, surface, nullptr); }
+    VkInstance instance;
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+};
+
+// One command buffer for the present pass; one frame in flight (the renderer waits for its own
+// work anyway, so more would not overlap anything).
+struct PresentCommands {
+    explicit PresentCommands(GpuContext& context) : device(context.device) {
+        VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+        poolInfo.queueFamilyIndex = context.queueFamily;
+        VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+        VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        allocateInfo.commandPool = pool;
+        allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        allocateInfo.commandBufferCount = 1;
+        VK_CHECK(vkAllocateCommandBuffers(device, &allocateInfo, &commands));
+        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+        VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
+        const VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        VK_CHECK(vkCreateSemaphore(device, &semaphoreInfo, nullptr, &imageAcquired));
+    }
+    ~PresentCommands() {
+        vkDestroySemaphore(device, imageAcquired, nullptr);
+        vkDestroyFence(device, fence, nullptr);
+        vkDestroyCommandPool(device, pool, nullptr);
+    }
+    VkDevice device;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer commands = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+    VkSemaphore imageAcquired = VK_NULL_HANDLE;
+};
+
+// Dear ImGui with its GLFW and Vulkan backends; the descriptor pool holds the font texture's set.
+struct ImGuiSession {
+    ImGuiSession(GpuContext& context, GLFWwindow* window, const Swapchain& swapchain, VkRenderPass renderPass)
+        : device(context.device) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
+        ImGui::StyleColorsDark();
+        ImGui::GetStyle().WindowRounding = 4.0f;
+        ImGui_ImplGlfw_InitForVulkan(window, true);  // chains to the viewer's own callbacks
+
+        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
+        VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+        poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+        poolInfo.maxSets = 4;
+        poolInfo.poolSizeCount = 1;
+        poolInfo.pPoolSizes = &size;
+        VK_CHECK(vkCreateDescriptorPool(device, &poolInfo, nullptr, &descriptorPool));
+
+        ImGui_ImplVulkan_InitInfo info{};
+        info.Instance = context.instance;
+        info.PhysicalDevice = context.physicalDevice;
+        info.Device = context.device;
+        info.QueueFamily = context.queueFamily;
+        info.Queue = context.queue;
+        info.DescriptorPool = descriptorPool;
+        info.MinImageCount = std::max(swapchain.minImageCount, 2u);
+        info.ImageCount = std::max(uint32_t(swapchain.images.size()), info.MinImageCount);
+        info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+        info.CheckVkResultFn = [](VkResult result) {
+            if (result != VK_SUCCESS) throwVkError(result, "Dear ImGui's Vulkan backend", __FILE__, __LINE__);
+        };
+        ImGui_ImplVulkan_Init(&info, renderPass);
+        submitAndWait(context, [](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });
+        ImGui_ImplVulkan_DestroyFontUploadObjects();
+    }
+    ~ImGuiSession() {
+        ImGui_ImplVulkan_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+        vkDestroyDescriptorPool(device, descriptorPool, nullptr);
+    }
+    VkDevice device;
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+};
+
+// The fields setShadingSettings() takes: when none changed (and neither did camera nor lights),
+// the last image is still right and the renderer need not run.
+bool sameShading(const RenderSettings& a, const RenderSettings& b) {
+    const Components &x = a.components, &y = b.components;
+    return a.mode == b.mode && x.directDiffuse == y.directDiffuse && x.directSpecular == y.directSpecular &&
+           x.indirectDiffuse == y.indirectDiffuse && x.indirectSpecular == y.indirectSpecular &&
+           x.ambientOcclusion == y.ambientOcclusion && x.emission == y.emission && x.shadows == y.shadows &&
+           a.ambientFactor == b.ambientFactor && a.shadowNormalOffset == b.shadowNormalOffset &&
+           a.shadowSlopeBias == b.shadowSlopeBias && a.pcfRadius == b.pcfRadius &&
+           a.diffuseConeCount == b.diffuseConeCount && a.diffuseConeAperture == b.diffuseConeAperture &&
+           a.diffuseCentreWeight == b.diffuseCentreWeight && a.coneStep == b.coneStep &&
+           a.coneMaxDistance == b.coneMaxDistance && a.coneStartOffset == b.coneStartOffset &&
+           a.coneStopOpacity == b.coneStopOpacity && a.aoFalloff == b.aoFalloff &&
+           a.skipEmptySpace == b.skipEmptySpace && a.debugView == b.debugView && a.debugVoxelMip == b.debugVoxelMip;
+}
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
+}
+
+// Scenes without a sun get one, as `--light-dir` does: shining from behind the camera and above,
+// so it reaches into open boxes like the Cornell box.
+size_t ensureSun(Scene& scene) {
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+        if (scene.lights[i].type == LightType::Directional) return i;
+    Light sun;
+    sun.name = "viewer sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 3.0f;
+    const glm::vec3 forward = scene.cameras.empty() ? glm::vec3(0, 0, -1) : scene.cameras.front().forward;
+    sun.direction = glm::normalize(glm::normalize(forward) + glm::vec3(0.0f, -0.7f, 0.0f));
+    scene.lights.push_back(sun);
+    return scene.lights.size() - 1;
+}
+
+float parseNumber(const ScriptEvent& event, size_t index) {
+    try {
+        return std::stof(event.arguments.at(index));
+    } catch (const std::exception&) {
+        throw Error("script, frame " + std::to_string(event.frame) + ": '" + event.action + "' needs numbers, not '" +
+                    event.arguments.at(index) + "'");
+    }
+}
+
+std::string timestampedScreenshotName() {
+    const std::time_t now = std::time(nullptr);
+    char name[64];
+    std::strftime(name, sizeof name, "vct-%Y%m%d-%H%M%S.png", std::localtime(&now));
+    return name;
+}
+
+class Viewer {
+public:
+    explicit Viewer(ViewerOptions options);
+    int run();
+
+private:
+    bool loopIteration();
+    void applyScript();
+    void handleKeys(float seconds);
+    void handleMouse(float seconds);
+    void applyRequests();
+    bool loadScene(const std::string& name);
+    void buildRenderer();
+    void recreateSwapchain();
+    void drawFrame(bool drawUi, const std::string& screenshotPath);
+    void writeScreenshot(const Buffer& pixels, const std::string& path);
+    UiFacts facts() const;
+
+    ViewerOptions options_;
+    GlfwSession glfw_;
+    Window window_;
+    std::unique_ptr<GpuContext> context_;
+    std::unique_ptr<Surface> surface_;
+    std::unique_ptr<Swapchain> swapchain_;
+    std::unique_ptr<PresentPass> presentPass_;
+    std::unique_ptr<PresentCommands> presentCommands_;
+    std::unique_ptr<GpuTimer> presentTimer_;
+    std::unique_ptr<ImGuiSession> imgui_;
+    std::unique_ptr<Renderer> renderer_;
+
+    InputState input_;
+    ViewerState state_;
+    Scene scene_;
+    size_t sunIndex_ = 0;
+    SunControl shownSun_;      // the sun the renderer has
+    Camera camera_;
+    Camera lastRenderedCamera_;
+    CameraControl cameraControl_;
+    VkExtent2D requestedExtent_{};
+    bool swapchainStale_ = false;
+    bool shownVsync_ = true;
+    bool imageStale_ = true;   // the renderer must run this frame
+    bool quit_ = false;
+    uint64_t iteration_ = 0;
+    uint32_t framesDrawn_ = 0;
+    size_t nextScriptEvent_ = 0;
+    std::vector<std::pair<std::string, bool>> pendingScreenshots_;  // path, with UI
+    std::chrono::steady_clock::time_point lastFrame_ = std::chrono::steady_clock::now();
+};
+
+Viewer::Viewer(ViewerOptions options)
+    : options_(std::move(options)), window_(options_.settings.width, options_.settings.height) {
+    installInputCallbacks(window_.handle, &input_);
+    ContextOptions contextOptions = options_.context;
+    uint32_t extensionCount = 0;
+    const char** extensions = glfwGetRequiredInstanceExtensions(&extensionCount);
+    if (!extensions) throw Error("cannot open a window: this Vulkan loader has no window-system surfaces");
+    contextOptions.instanceExtensions.insert(contextOptions.instanceExtensions.end(), extensions,
+                                             extensions + extensionCount);
+    contextOptions.swapchain = true;
+    context_ = std::make_unique<GpuContext>(contextOptions);
+    context_->fenceTimeoutSeconds = options_.gpuTimeoutSeconds;
+    surface_ = std::make_unique<Surface>(*context_, window_.handle);
+
+    state_.settings = options_.settings;
+    state_.exposure = options_.exposure;
+    state_.vsync = shownVsync_ = options_.vsync;
+    state_.showGuide = options_.showGuide;
+    state_.screenshotWithUi = options_.screenshotWithUi;
+    recreateSwapchain();
+    presentPass_ = std::make_unique<PresentPass>(*context_, swapchain_->format);
+    presentPass_->createFramebuffers(*swapchain_);
+    presentCommands_ = std::make_unique<PresentCommands>(*context_);
+    presentTimer_ = std::make_unique<GpuTimer>(*context_, 2);
+    imgui_ = std::make_unique<ImGuiSession>(*context_, window_.handle, *swapchain_, presentPass_->renderPass);
+
+    scene_ = std::move(options_.scene);
+    state_.sceneName = options_.sceneName;
+    if (scene_.cameras.empty()) scene_.cameras.push_back(defaultCamera(scene_.bounds()));
+    sunIndex_ = ensureSun(scene_);
+    state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
+    state_.sun.intensity = scene_.lights[sunIndex_].intensity;
+    shownSun_ = state_.sun;
+    camera_ = scene_.cameras.front();
+    cameraControl_.reset(camera_, scene_.bounds());
+    buildRenderer();
+    std::printf("vct view: %s, %zu triangles, on %s (%s)\n", state_.sceneName.c_str(), scene_.triangleCount(),
+                context_->deviceName().c_str(), presentModeName(swapchain_->presentMode));
+}
+
+void Viewer::recreateSwapchain() {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_.handle, &width, &height);
+    requestedExtent_ = {uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1))};
+    if (swapchain_) VK_CHECK(vkDeviceWaitIdle(context_->device));
+    const VkSwapchainKHR previous = swapchain_ ? swapchain_->swapchain : VK_NULL_HANDLE;
+    auto replacement = std::make_unique<Swapchain>(*context_, surface_->surface, requestedExtent_, state_.vsync, previous);
+    swapchain_ = std::move(replacement);
+    shownVsync_ = state_.vsync;
+    swapchainStale_ = false;
+    if (presentPass_) {
+        if (swapchain_->format != presentPass_->format)
+            throw Error("the window's image format changed; restart the viewer");
+        presentPass_->createFramebuffers(*swapchain_);
+    }
+    if (imgui_) ImGui_ImplVulkan_SetMinImageCount(std::max(swapchain_->minImageCount, 2u));
+    state_.settings.width = swapchain_->extent.width;
+    state_.settings.height = swapchain_->extent.height;
+    if (renderer_) {
+        renderer_->resize(swapchain_->extent.width, swapchain_->extent.height);  // the voxels are kept
+        imageStale_ = true;
+    }
+}
+
+void Viewer::buildRenderer() {
+    if (renderer_) VK_CHECK(vkDeviceWaitIdle(context_->device));
+    renderer_.reset();  // free the old voxels before allocating new ones
+    renderer_ = std::make_unique<Renderer>(*context_, scene_, state_.settings);
+    renderer_->setCamera(camera_);
+    renderer_->setShadingSettings(state_.settings);
+    imageStale_ = true;
+}
+
+bool Viewer::loadScene(const std::string& name) {
+    std::printf("loading %s\n", name.c_str());
+    Scene loaded;
+    try {
+        loaded = vct::loadScene(name);
+    } catch (const Error& error) {
+        state_.error = error.what();
+        std::fprintf(stderr, "vct view: %s (keeping %s)\n", error.what(), state_.sceneName.c_str());
+        return false;
+    }
+    if (loaded.cameras.empty()) loaded.cameras.push_back(defaultCamera(loaded.bounds()));
+    Scene previous = std::move(scene_);
+    scene_ = std::move(loaded);
+    const size_t previousSun = sunIndex_;
+    sunIndex_ = ensureSun(scene_);
+    try {
+        buildRenderer();
+    } catch (const Error& error) {
+        state_.error = std::string(error.what()) + " (keeping " + state_.sceneName + ")";
+        scene_ = std::move(previous);
+        sunIndex_ = previousSun;
+        buildRenderer();
+        return false;
+    }
+    state_.error.clear();
+    state_.sceneName = name;
+    for (const std::string& warning : scene_.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
+    state_.sun.intensity = scene_.lights[sunIndex_].intensity;
+    shownSun_ = state_.sun;
+    camera_ = scene_.cameras.front();
+    cameraControl_.reset(camera_, scene_.bounds());
+    renderer_->setCamera(camera_);
+    return true;
+}
+
+void Viewer::applyScript() {
+    while (nextScriptEvent_ < options_.script.size() && options_.script[nextScriptEvent_].frame <= iteration_) {
+        const ScriptEvent& event = options_.script[nextScriptEvent_++];
+        const std::vector<std::string>& a = event.arguments;
+        if (event.action == "key") {
+            const int key = keyFromName(a[0]);
+            if (a[1] == "press") {
+                input_.keysPressed.push_back(key);
+            } else {
+                input_.key(key, a[1] == "down");
+            }
+        } else if (event.action == "mouse") {
+            input_.moveCursor(glm::vec2(parseNumber(event, 0), parseNumber(event, 1)));
+        } else if (event.action == "button") {
+            input_.buttons[a[0] == "left" ? GLFW_MOUSE_BUTTON_LEFT : GLFW_MOUSE_BUTTON_RIGHT] = a[1] == "down";
+        } else if (event.action == "scroll") {
+            input_.scroll += parseNumber(event, 0);
+        } else if (event.action == "resize") {
+            glfwSetWindowSize(window_.handle, int(parseNumber(event, 0)), int(parseNumber(event, 1)));
+        } else if (event.action == "iconify") {
+            glfwIconifyWindow(window_.handle);
+        } else if (event.action == "restore") {
+            glfwRestoreWindow(window_.handle);
+        } else if (event.action == "screenshot") {
+            pendingScreenshots_.emplace_back(a[0], a.size() > 1);
+        } else if (event.action == "drop") {
+            input_.droppedFiles.push_back(a[0]);
+        } else if (event.action == "quit") {
+            quit_ = true;
+        }
+    }
+}
+
+void Viewer::handleKeys(float seconds) {
+    for (int key : input_.keysPressed) {
+        RenderSettings& settings = state_.settings;
+        Components& c = settings.components;
+        switch (key) {
+            case GLFW_KEY_F1:
+            case GLFW_KEY_H: state_.showGuide = !state_.showGuide; break;
+            case GLFW_KEY_TAB: state_.showPanels = !state_.showPanels; break;
+            case GLFW_KEY_R: state_.requestCameraReset = true; break;
+            case GLFW_KEY_O: state_.requestOrbitToggle = true; break;
+            case GLFW_KEY_1: c.directDiffuse = !c.directDiffuse; break;
+            case GLFW_KEY_2: c.directSpecular = !c.directSpecular; break;
+            case GLFW_KEY_3: c.indirectDiffuse = !c.indirectDiffuse; break;
+            case GLFW_KEY_4: c.indirectSpecular = !c.indirectSpecular; break;
+            case GLFW_KEY_5: c.ambientOcclusion = !c.ambientOcclusion; break;
+            case GLFW_KEY_6: c.emission = !c.emission; break;
+            case GLFW_KEY_7: c.shadows = !c.shadows; break;
+            case GLFW_KEY_M: settings.mode = RenderMode((uint32_t(settings.mode) + 1) % 3); break;
+            case GLFW_KEY_V: settings.debugView = DebugView((uint32_t(settings.debugView) + 1) % 8); break;
+            case GLFW_KEY_LEFT_BRACKET:
+                if (settings.debugVoxelMip > 0) --settings.debugVoxelMip;
+                break;
+            case GLFW_KEY_RIGHT_BRACKET: ++settings.debugVoxelMip; break;  // clamped by the panel
+            case GLFW_KEY_L: state_.sun.animate = !state_.sun.animate; break;
+            case GLFW_KEY_F12:
+            case GLFW_KEY_P: state_.requestScreenshot = true; break;
+            case GLFW_KEY_ESCAPE: quit_ = true; break;
+            default: break;
+        }
+    }
+    const float degrees = 45.0f * seconds;
+    if (input_.held(GLFW_KEY_LEFT)) state_.sun.azimuthDegrees -= degrees;
+    if (input_.held(GLFW_KEY_RIGHT)) state_.sun.azimuthDegrees += degrees;
+    if (input_.held(GLFW_KEY_UP)) state_.sun.elevationDegrees += degrees;
+    if (input_.held(GLFW_KEY_DOWN)) state_.sun.elevationDegrees -= degrees;
+}
+
+void Viewer::handleMouse(float seconds) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool keyboardFree = !io.WantCaptureKeyboard, mouseFree = !io.WantCaptureMouse;
+    const bool ctrl = input_.held(GLFW_KEY_LEFT_CONTROL) || input_.held(GLFW_KEY_RIGHT_CONTROL);
+    const bool left = input_.buttons[GLFW_MOUSE_BUTTON_LEFT], right = input_.buttons[GLFW_MOUSE_BUTTON_RIGHT];
+    CameraInput camera;
+    if (keyboardFree) {
+        camera.forward = input_.held(GLFW_KEY_W);
+        camera.back = input_.held(GLFW_KEY_S);
+        camera.left = input_.held(GLFW_KEY_A);
+        camera.right = input_.held(GLFW_KEY_D);
+        camera.down = input_.held(GLFW_KEY_Q);
+        camera.up = input_.held(GLFW_KEY_E);
+        camera.fast = input_.held(GLFW_KEY_LEFT_SHIFT) || input_.held(GLFW_KEY_RIGHT_SHIFT);
+    }
+    camera.seconds = seconds;
+    if (mouseFree) {
+        if (ctrl && left) {
+            // Drag right: the sun moves clockwise seen from above; drag up: it rises.
+            state_.sun.azimuthDegrees += 0.3f * input_.cursorDelta.x;
+            state_.sun.elevationDegrees -= 0.3f * input_.cursorDelta.y;
+        } else if (right || (left && cameraControl_.mode() == CameraControl::Mode::Orbit)) {
+            camera.drag = input_.cursorDelta;
+        }
+        camera.scroll = input_.scroll;
+    }
+    if (cameraControl_.update(camera, camera_)) renderer_->setCamera(camera_);
+}
+
+void Viewer::applyRequests() {
+    for (const std::string& path : input_.droppedFiles) state_.requestedScene = path;
+    input_.droppedFiles.clear();
+    if (!state_.requestedScene.empty()) {
+        const std::string name = state_.requestedScene;
+        state_.requestedScene.clear();
+        loadScene(name);
+    }
+    if (state_.requestCameraReset) {
+        state_.requestCameraReset = false;
+        camera_ = scene_.cameras.front();
+        cameraControl_.reset(camera_, scene_.bounds());
+        renderer_->setCamera(camera_);
+    }
+    if (state_.requestOrbitToggle) {
+        state_.requestOrbitToggle = false;
+        const bool orbit = cameraControl_.mode() != CameraControl::Mode::Orbit;
+        cameraControl_.setMode(orbit ? CameraControl::Mode::Orbit : CameraControl::Mode::Fly, camera_);
+        renderer_->setCamera(camera_);
+    }
+    state_.cameraIsOrbiting = cameraControl_.mode() == CameraControl::Mode::Orbit;
+    state_.cameraSpeed = cameraControl_.speed();
+    if (state_.requestScreenshot) {
+        state_.requestScreenshot = false;
+        pendingScreenshots_.emplace_back(timestampedScreenshotName(), state_.screenshotWithUi);
+    }
+
+    state_.sun.normalize();
+    const SunControl& sun = state_.sun;
+    if (sun.azimuthDegrees != shownSun_.azimuthDegrees || sun.elevationDegrees != shownSun_.elevationDegrees ||
+        sun.intensity != shownSun_.intensity) {
+        std::vector<Light> lights = renderer_->lights();
+        lights.at(sunIndex_).direction = sun.travelDirection();
+        lights.at(sunIndex_).intensity = sun.intensity;
+        renderer_->setLights(lights);  // re-injects light; the voxels stay
+        shownSun_ = sun;
+        imageStale_ = true;
+    }
+    if (needsNewRenderer(renderer_->settings(), state_.settings)) {
+        const RenderSettings previous = renderer_->settings();
+        try {
+            const std::vector<Light> lights = renderer_->lights();
+            buildRenderer();
+            renderer_->setLights(lights);
+        } catch (const Error& error) {
+            state_.error = error.what();
+            state_.settings = previous;
+            buildRenderer();
+        }
+    }
+    if (!sameShading(renderer_->settings(), state_.settings)) {
+        renderer_->setShadingSettings(state_.settings);
+        imageStale_ = true;
+    }
+    if (state_.vsync != shownVsync_) swapchainStale_ = true;
+}
+
+UiFacts Viewer::facts() const {
+    UiFacts facts;
+    facts.deviceName = context_->deviceName();
+    facts.presentMode = presentModeName(swapchain_->presentMode);
+    facts.width = swapchain_->extent.width;
+    facts.height = swapchain_->extent.height;
+    facts.voxelResolution = renderer_->voxelGrid().resolution.x;
+    facts.voxelMips = renderer_->voxelRadiance().desc.mipLevels;
+    facts.deviceMemoryBytes = renderer_->deviceMemoryBytes();
+    facts.triangles = scene_.triangleCount();
+    facts.lights = renderer_->lights().size();
+    return facts;
+}
+
+void Viewer::writeScreenshot(const Buffer& pixels, const std::string& path) {
+    const VkExtent2D extent = swapchain_->extent;
+    const bool bgra = swapchain_->format == VK_FORMAT_B8G8R8A8_UNORM;
+    const uint8_t* source = static_cast<const uint8_t*>(pixels.mapped);
+    std::vector<uint8_t> rgb(size_t(extent.width) * extent.height * 3);
+    for (size_t i = 0; i < size_t(extent.width) * extent.height; ++i) {
+        rgb[i * 3 + 0] = source[i * 4 + (bgra ? 2 : 0)];
+        rgb[i * 3 + 1] = source[i * 4 + 1];
+        rgb[i * 3 + 2] = source[i * 4 + (bgra ? 0 : 2)];
+    }
+    if (!stbi_write_png(path.c_str(), int(extent.width), int(extent.height), 3, rgb.data(), int(extent.width * 3)))
+        throw Error("cannot write the screenshot '" + path + "'");
+    state_.notice = "saved " + path;
+    std::printf("saved %s (%ux%u)\n", path.c_str(), extent.width, extent.height);
+}
+
+void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
+    PresentCommands& frame = *presentCommands_;
+    uint32_t imageIndex = 0;
+    const VkResult acquired = vkAcquireNextImageKHR(context_->device, swapchain_->swapchain, UINT64_MAX,
+                                                    frame.imageAcquired, VK_NULL_HANDLE, &imageIndex);
+    if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+        swapchainStale_ = true;
+        return;
+    }
+    if (acquired != VK_SUBOPTIMAL_KHR) VK_CHECK(acquired);
+
+    const bool capture = !screenshotPath.empty() && swapchain_->canCopyFrom;
+    const VkExtent2D extent = swapchain_->extent;
+    Buffer pixels;
+    if (capture) pixels = Buffer(*context_, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+
+    VK_CHECK(vkResetFences(context_->device, 1, &frame.fence));
+    VK_CHECK(vkResetCommandBuffer(frame.commands, 0));
+    VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(frame.commands, &beginInfo));
+    presentTimer_->reset(frame.commands);
+    presentTimer_->begin(frame.commands, "present");
+    TonemapParams tonemap;
+    tonemap.exposure = state_.exposure;
+    const DebugView view = renderer_->settings().debugView;
+    tonemap.toneCurve = view == DebugView::None || view == DebugView::VoxelRadiance;
+    presentPass_->begin(frame.commands, imageIndex, extent, renderer_->output(), tonemap);
+    if (drawUi) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.commands);
+    presentPass_->end(frame.commands);
+    presentTimer_->end(frame.commands);
+    if (capture) {
+        const VkImage image = swapchain_->images[imageIndex];
+        imageBarrier(frame.commands, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {extent.width, extent.height, 1};
+        vkCmdCopyImageToBuffer(frame.commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, pixels.buffer, 1, &region);
+        imageBarrier(frame.commands, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                     VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+    }
+    VK_CHECK(vkEndCommandBuffer(frame.commands));
+
+    const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    const VkSemaphore renderFinished = swapchain_->renderFinished[imageIndex];
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &frame.imageAcquired;
+    submit.pWaitDstStageMask = &waitStage;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &frame.commands;
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &renderFinished;
+    VK_CHECK(vkQueueSubmit(context_->queue, 1, &submit, frame.fence));
+
+    VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    present.waitSemaphoreCount = 1;
+    present.pWaitSemaphores = &renderFinished;
+    present.swapchainCount = 1;
+    present.pSwapchains = &swapchain_->swapchain;
+    present.pImageIndices = &imageIndex;
+    const VkResult presented = vkQueuePresentKHR(context_->queue, &present);
+    if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR) swapchainStale_ = true;
+    else VK_CHECK(presented);
+    // Wait here: the acquire semaphore and command buffer are reused next frame, and the
+    // renderer writes the image this pass read.
+    waitForFence(*context_, frame.fence);
+    const std::vector<PassTime> times = presentTimer_->results();
+    if (!times.empty()) state_.history.presentMilliseconds = float(times.front().milliseconds);
+    ++framesDrawn_;
+    if (capture) writeScreenshot(pixels, screenshotPath);
+    else if (!screenshotPath.empty()) state_.notice = "this window system cannot copy from its images";
+}
+
+// One pass of the main loop; false when the viewer should stop.
+bool Viewer::loopIteration() {
+    input_.beginFrame();
+    glfwPollEvents();
+    applyScript();
+    ++iteration_;
+    if (glfwWindowShouldClose(window_.handle) || quit_) return false;
+
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_.handle, &width, &height);
+    if (width == 0 || height == 0 || glfwGetWindowAttrib(window_.handle, GLFW_ICONIFIED)) {
+        // Minimised: nothing to draw into. A script keeps counting frames, so it must not block.
+        if (options_.script.empty()) glfwWaitEvents();
+        else glfwWaitEventsTimeout(0.02);
+        return true;
+    }
+    if (swapchainStale_ || uint32_t(width) != requestedExtent_.width || uint32_t(height) != requestedExtent_.height)
+        recreateSwapchain();
+
+    const auto now = std::chrono::steady_clock::now();
+    const float wallSeconds = std::chrono::duration<float>(now - lastFrame_).count();
+    lastFrame_ = now;
+    // Scripts move by fixed steps so tests see the same images on fast and slow machines.
+    const float seconds = options_.script.empty() ? std::min(wallSeconds, 1.0f) : 1.0f / 30.0f;
+
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    if (!options_.script.empty()) {
+        // A script's mouse is the only mouse: ImGui must see it where the camera sees it.
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(input_.cursor.x, input_.cursor.y);
+        for (int button = 0; button < 3; ++button) io.MouseDown[button] = input_.buttons[button];
+    }
+    ImGui::NewFrame();
+    if (!ImGui::GetIO().WantCaptureKeyboard) handleKeys(seconds);
+    if (state_.sun.animate) state_.sun.azimuthDegrees += state_.sun.animateDegreesPerSecond * seconds;
+    handleMouse(seconds);
+    applyRequests();
+    if (swapchainStale_) recreateSwapchain();
+
+    const UiFacts uiFacts = facts();
+    if (state_.showPanels) {
+        drawSettingsWindow(state_, uiFacts);
+        drawProfilerWindow(state_, uiFacts);
+    }
+    if (state_.showGuide) drawGuideWindow(state_);
+    ImGui::Render();
+
+    if (imageStale_ || options_.renderEveryFrame || !sameCamera(renderer_->camera(), lastRenderedCamera_)) {
+        const FrameStats stats = renderer_->renderFrame();
+        lastRenderedCamera_ = renderer_->camera();
+        imageStale_ = false;
+        state_.history.add(wallSeconds * 1000.0f, stats);
+    } else {
+        FrameStats idle;
+        idle.skipped = {"all"};
+        state_.history.add(wallSeconds * 1000.0f, idle);
+    }
+
+    const bool scriptedEnd = options_.frames > 0 && framesDrawn_ + 1 == options_.frames;
+    std::string screenshot;
+    bool withUi = state_.showPanels || state_.showGuide;
+    if (scriptedEnd && !options_.screenshotPath.empty()) {
+        screenshot = options_.screenshotPath;
+        withUi = options_.screenshotWithUi;
+    } else if (!pendingScreenshots_.empty()) {
+        screenshot = pendingScreenshots_.front().first;
+        withUi = pendingScreenshots_.front().second;
+        pendingScreenshots_.erase(pendingScreenshots_.begin());
+    }
+    drawFrame(screenshot.empty() || withUi, screenshot);
+    return !scriptedEnd;
+}
+
+int Viewer::run() {
+    while (loopIteration()) {
+    }
+    VK_CHECK(vkDeviceWaitIdle(context_->device));
+    std::printf("vct view: %u frames drawn\n", framesDrawn_);
+    if (!context_->validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
+    return 0;
+}
+
+}  // namespace
+
+int runViewer(ViewerOptions options) {
+    Viewer viewer(std::move(options));
+    return viewer.run();
+}
+
+}  // namespace vct

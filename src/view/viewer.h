@@ -1,0 +1,37 @@
+// vct view: a window showing the renderer's image live, with camera, sun and settings controls.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gpu/context.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+#include "view/input.h"
+
+namespace vct {
+
+struct ViewerOptions {
+    Scene scene;
+    std::string sceneName;
+    RenderSettings settings;       // width and height: the window's initial size
+    ContextOptions context;
+    double gpuTimeoutSeconds = 120.0;
+    float exposure = 1.0f;
+    bool vsync = true;
+    bool showGuide = true;
+    // Scripted use: save the image shown on frame `frames` to `screenshotPath` and exit
+    // (frames = 0: run until the window closes).
+    std::string screenshotPath;
+    uint32_t frames = 0;
+    bool screenshotWithUi = false;
+    std::vector<ScriptEvent> script;
+    bool renderEveryFrame = false;  // redraw even when nothing changed (for measuring)
+};
+
+// Opens the window and runs until it is closed (or the scripted frames are done). Returns the
+// process exit code; throws vct::Error for what the user can fix (no display, no device).
+int runViewer(ViewerOptions options);
+
+}  // namespace vct

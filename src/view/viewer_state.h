@@ -1,0 +1,60 @@
+// What the viewer's panels show and change: the settings asked for, the sun, the frame numbers.
+// The main loop (viewer.cpp) applies requests from here to the renderer; the panels (ui.cpp)
+// only read and write this struct.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/renderer.h"
+#include "render/settings.h"
+#include "view/controls.h"
+
+namespace vct {
+
+// Frame and pass times over the last frames, for the profiler window.
+struct FrameHistory {
+    static constexpr size_t length = 120;
+    std::deque<float> frameMilliseconds;        // wall clock, loop iteration to loop iteration
+    std::deque<float> gpuMilliseconds;          // the renderer's passes, summed
+    std::map<std::string, float> passAverage;   // moving average of each pass over the frames it ran
+    FrameStats last;                            // the last frame the renderer drew
+    bool lastFrameIdle = false;                 // nothing changed: the renderer did not run
+    float presentMilliseconds = 0.0f;           // tone mapping + UI, GPU
+
+    void add(float frameMs, const FrameStats& stats);
+    float averageFrameMilliseconds() const;
+};
+
+struct ViewerState {
+    // Wanted settings; width and height follow the window. Voxel and shadow-map resolution,
+    // supersampling, mip kind and bounces take a new Renderer (see needsNewRenderer).
+    RenderSettings settings;
+    float exposure = 1.0f;
+    SunControl sun;
+    bool showGuide = true;
+    bool showPanels = true;
+    bool vsync = true;
+    bool screenshotWithUi = false;
+
+    std::string sceneName;                  // what is loaded now
+    char scenePathField[512] = {};          // the panel's text field
+    std::string requestedScene;             // set by the panel or a drop; loaded by the main loop
+    bool requestScreenshot = false;
+    bool requestCameraReset = false;
+    bool requestOrbitToggle = false;
+    bool cameraIsOrbiting = false;
+    float cameraSpeed = 1.0f;
+
+    std::string error;                      // the last failure the user caused (a scene that did not load)
+    std::string notice;                     // e.g. where a screenshot went
+    FrameHistory history;
+};
+
+// Settings that size images or voxels: changing them means building a new Renderer.
+bool needsNewRenderer(const RenderSettings& current, const RenderSettings& wanted);
+
+}  // namespace vct
