@@ -1,0 +1,47 @@
+#version 460
+// Turns the integer sums of the voxelize pass into averages: one invocation per voxel.
+//   albedoOpacity: mean linear base colour, opacity 1 where any triangle touched, else 0.
+//   normal: xyz the mean of the touching triangles' unit normals, deliberately not renormalized (its
+//           length says how much they agree: the two faces of a thin wall cancel to ~0); w the
+//           triangle count, clamped to the largest half float.
+//   emission: mean emitted radiance (scene units), clamped to the largest half float; a = opacity.
+#extension GL_GOOGLE_include_directive : require
+#include "voxelize.h"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(std430, set = 0, binding = 0) readonly buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
+layout(set = 0, binding = 1, rgba8) uniform writeonly image3D albedoOpacity;
+layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D normalCount;
+layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D emission;
+layout(push_constant) uniform Push { VoxelizeParams params; };
+
+vec3 channelMean(uint first, uint index, float divisor, bool isSigned) {
+    vec3 sum;
+    for (uint i = 0u; i < 3u; ++i) {
+        uint raw = accumulation[first + i].values[index];
+        sum[i] = isSigned ? float(int(raw)) : float(raw);
+    }
+    return sum / divisor;
+}
+
+void main() {
+    uvec3 voxel = gl_GlobalInvocationID;
+    uint resolution = params.grid.resolution.x;
+    if (any(greaterThanEqual(voxel, uvec3(resolution)))) return;
+    uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);
+    uint count = accumulation[ACCUM_COUNT].values[index];
+    ivec3 texel = ivec3(voxel);
+    if (count == 0u) {
+        imageStore(albedoOpacity, texel, vec4(0.0f));
+        imageStore(normalCount, texel, vec4(0.0f));
+        imageStore(emission, texel, vec4(0.0f));
+        return;
+    }
+    float n = float(count);
+    vec3 albedo = channelMean(ACCUM_ALBEDO, index, n * ALBEDO_FIXED_SCALE, false);
+    vec3 normal = channelMean(ACCUM_NORMAL, index, n * NORMAL_FIXED_SCALE, true);
+    vec3 radiance = channelMean(ACCUM_EMISSION, index, n, false) * params.emission.y;
+    imageStore(albedoOpacity, texel, vec4(albedo, 1.0f));
+    imageStore(normalCount, texel, vec4(normal, min(n, HALF_FLOAT_MAX)));
+    imageStore(emission, texel, vec4(min(radiance, vec3(HALF_FLOAT_MAX)), 1.0f));
+}

@@ -1,0 +1,57 @@
+// Voxelization: the work split, the fixed-point accumulation and the pass parameters. Shared by C++ and GLSL.
+//
+// Work split. A large triangle touches thousands of voxels; one invocation per triangle would run
+// them one after another while the rest of the GPU idles. So the CPU (once, when the geometry is
+// uploaded) cuts each triangle's voxel bounding box into tiles of VOXELIZE_TILE³ voxels, keeps the
+// tiles the triangle's plane and edges can reach (the same separating-axis test against the tile's
+// box, with a margin), and writes one work item (triangle, tile) per kept tile. The GPU runs one
+// workgroup per work item and one invocation per voxel of the tile, so the work is spread evenly
+// whatever the triangle sizes.
+//
+// Order-independent averaging. Each touching triangle adds its attributes to integer sums with
+// atomicAdd; integer addition is associative, so the sums (and the images) do not depend on the
+// order the GPU happens to run the work items in. Float atomics would round differently per order.
+// Fixed-point scales, with N contributions to one voxel (sums wrap modulo 2³², so only the final
+// sum has to fit):
+//   albedo in [0, 1] × 2^15, unsigned: N · 2^15 < 2^32 for N ≤ 131071; step 3·10⁻⁵ (UNORM8 needs 4·10⁻³).
+//   normal in [−1, 1] × 2^14, two's complement: |N · 2^14| < 2^31 for N ≤ 131071; step 6·10⁻⁵
+//       (the half-float output has 5·10⁻⁴ near 1).
+//   emission in [0, max] scaled so the scene's largest emission component is 2^15, unsigned: the same
+//       bound as albedo; each contribution is rounded to max · 2^−16, far below half-float precision
+//       for the brightest emitter (dimmer emitters in the same scene get the same absolute step).
+#ifndef VCT_VOXELIZE_H
+#define VCT_VOXELIZE_H
+
+#include "cpp_glsl.h"
+#include "voxel_grid.h"
+
+VCT_SHARED_BEGIN
+
+const uint VOXELIZE_TILE = 4u;  // a work item covers VOXELIZE_TILE³ voxels
+
+// The accumulation buffers, one uint per voxel each, index x + N·(y + N·z).
+const uint ACCUM_COUNT = 0u;     // triangles touching the voxel
+const uint ACCUM_ALBEDO = 1u;    // 3 channels, rgb × ALBEDO_FIXED_SCALE
+const uint ACCUM_NORMAL = 4u;    // 3 channels, xyz × NORMAL_FIXED_SCALE (two's complement)
+const uint ACCUM_EMISSION = 7u;  // 3 channels, rgb × VoxelizeParams.emission.x
+const uint ACCUM_CHANNELS = 10u;
+
+const float ALBEDO_FIXED_SCALE = 32768.0f;
+const float NORMAL_FIXED_SCALE = 16384.0f;
+const float EMISSION_FIXED_MAX = 32768.0f;     // the scene's largest emission component maps here
+const uint MAX_EXACT_CONTRIBUTIONS = 131071u;  // triangles per voxel before a sum could overflow
+const float HALF_FLOAT_MAX = 65504.0f;
+
+struct VoxelizeParams {
+    VoxelGridParams grid;  // resolution.w = work items
+    vec4 emission;         // x fixed-point scale (EMISSION_FIXED_MAX / largest component, 0 if none), y its inverse
+    uvec4 dispatch;        // x workgroups per row of the voxelize dispatch (work item = y · x + x)
+};
+
+// A tile's position (in tiles) packed 10 bits per axis: grids up to 4096 voxels a side.
+SHARED_FN uint packTile(uvec3 tile) { return tile.x | (tile.y << 10u) | (tile.z << 20u); }
+SHARED_FN uvec3 unpackTile(uint packed) { return uvec3(packed & 1023u, (packed >> 10u) & 1023u, packed >> 20u); }
+
+VCT_SHARED_END
+
+#endif

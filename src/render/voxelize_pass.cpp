@@ -1,0 +1,227 @@
+#include "render/voxelize_pass.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "error.h"
+#include "gpu/commands.h"
+#include "render/voxelize_reference.h"
+
+namespace vct {
+namespace {
+
+constexpr VkFormat kAlbedoFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kHalfFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr uint64_t kImageBytesPerVoxel = 4 + 8 + 8;
+constexpr uint64_t kAccumulationBytesPerVoxel = 4 * glsl::ACCUM_CHANNELS;
+
+// Tiles are kept when the triangle's separation from the tile's box is at most this (grid units):
+// far above float rounding (~10⁻⁵ voxel), so a voxel the GPU marks is never in a dropped tile.
+constexpr double kTileSlack = 1e-3;
+
+uint64_t cube(uint32_t resolution) { return uint64_t(resolution) * resolution * resolution; }
+
+bool gridFits(uint64_t heapBytes, uint64_t maxBufferRange, uint32_t resolution) {
+    return voxelizeMemoryBytes(resolution) <= heapBytes / 2 && cube(resolution) * 4 <= maxBufferRange;
+}
+
+GpuImage makeVoxelImage(GpuContext& context, uint32_t resolution, VkFormat format, const char* name) {
+    ImageDesc desc;
+    desc.type = VK_IMAGE_TYPE_3D;
+    desc.format = format;
+    desc.extent = {resolution, resolution, resolution};
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    desc.debugName = name;
+    return GpuImage(context, desc);
+}
+
+// One push of plain buffers, the accumulation array and storage images (DescriptorPush has no arrays).
+void pushDescriptors(GpuContext& context, VkCommandBuffer commands, const Pipeline& pipeline,
+                     const std::vector<VkBuffer>& buffers, const std::array<Buffer, glsl::ACCUM_CHANNELS>& accumulation,
+                     const std::vector<VkImageView>& images) {
+    std::vector<VkDescriptorBufferInfo> bufferInfos;
+    for (VkBuffer buffer : buffers) bufferInfos.push_back({buffer, 0, VK_WHOLE_SIZE});
+    std::vector<VkDescriptorBufferInfo> accumulationInfos;
+    for (const Buffer& channel : accumulation) accumulationInfos.push_back({channel.buffer, 0, VK_WHOLE_SIZE});
+    std::vector<VkDescriptorImageInfo> imageInfos;
+    for (VkImageView view : images) imageInfos.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
+
+    std::vector<VkWriteDescriptorSet> writes;
+    auto add = [&](uint32_t count, VkDescriptorType type, const VkDescriptorBufferInfo* bufferInfo,
+                   const VkDescriptorImageInfo* imageInfo) {
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstBinding = uint32_t(writes.size());
+        write.descriptorCount = count;
+        write.descriptorType = type;
+        write.pBufferInfo = bufferInfo;
+        write.pImageInfo = imageInfo;
+        writes.push_back(write);
+    };
+    for (const VkDescriptorBufferInfo& info : bufferInfos) add(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &info, nullptr);
+    add(glsl::ACCUM_CHANNELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accumulationInfos.data(), nullptr);
+    for (const VkDescriptorImageInfo& info : imageInfos) add(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, nullptr, &info);
+    context.cmdPushDescriptorSet(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout, 0, uint32_t(writes.size()),
+                                 writes.data());
+}
+
+Pipeline makePipeline(GpuContext& context, const char* shader, uint32_t plainBuffers, uint32_t images) {
+    std::vector<Binding> bindings;
+    for (uint32_t i = 0; i < plainBuffers; ++i)
+        bindings.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
+    bindings.push_back(
+        {plainBuffers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT, glsl::ACCUM_CHANNELS});
+    for (uint32_t i = 0; i < images; ++i)
+        bindings.push_back({plainBuffers + 1 + i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT});
+    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(context, bindings);
+    VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(glsl::VoxelizeParams));
+    return Pipeline(context, createComputePipeline(context, layout, shader), layout, setLayout);
+}
+
+}  // namespace
+
+uint64_t voxelizeMemoryBytes(uint32_t resolution) {
+    return cube(resolution) * (kImageBytesPerVoxel + kAccumulationBytesPerVoxel);
+}
+
+void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
+                         const std::string& deviceName, uint32_t resolution) {
+    uint64_t heapBytes = 0;
+    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+        if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            heapBytes = std::max<uint64_t>(heapBytes, memory.memoryHeaps[i].size);
+    if (gridFits(heapBytes, limits.maxStorageBufferRange, resolution)) return;
+    uint32_t fitting = resolution;
+    while (fitting > 1 && !gridFits(heapBytes, limits.maxStorageBufferRange, fitting)) fitting /= 2;
+    const std::string size = std::to_string(resolution);
+    std::string message = "a " + size + "³ voxel grid needs " + std::to_string(voxelizeMemoryBytes(resolution) >> 20) +
+                          " MiB of GPU memory, more than " + deviceName + " can spare (half of its " +
+                          std::to_string(heapBytes >> 20) + " MiB heap, buffers of at most " +
+                          std::to_string(limits.maxStorageBufferRange >> 20) + " MiB)";
+    message += fitting > 1 ? "; a " + std::to_string(fitting) + "³ grid would fit" : "; no grid would fit";
+    throw Error(message);
+}
+
+std::vector<uint32_t> gpuTriangleOrder(const Scene& scene, const SceneGpu& sceneGpu) {
+    const uint32_t count = uint32_t(scene.triangleCount());
+    if (count != sceneGpu.triangleCount)
+        throw Error("the voxelizer was given a scene of " + std::to_string(count) + " triangles but the GPU holds " +
+                    std::to_string(sceneGpu.triangleCount));
+    std::vector<uint32_t> order(count);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return scene.triangleMaterials[a] < scene.triangleMaterials[b]; });
+    uint32_t covered = 0;
+    for (const SceneGpu::MaterialRange& range : sceneGpu.materialRanges)
+        for (uint32_t i = range.firstIndex / 3; i < (range.firstIndex + range.indexCount) / 3; ++i, ++covered)
+            if (i >= count || scene.triangleMaterials[order[i]] != range.material)
+                throw Error("the voxelizer's scene and the scene on the GPU order their triangles differently");
+    if (covered != count) throw Error("the scene on the GPU does not cover every triangle of the voxelizer's scene");
+    return order;
+}
+
+std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
+                                               const glsl::VoxelGridParams& grid) {
+    const uint32_t resolution = grid.resolution.x;
+    const int tile = int(glsl::VOXELIZE_TILE);
+    const double halfTile = 0.5 * tile;
+    std::vector<glm::uvec2> items;
+    for (uint32_t position = 0; position < order.size(); ++position) {
+        if (isDegenerateTriangle(scene, order[position])) continue;
+        const TriangleD triangle = gridTriangle(scene, grid, order[position]);
+        const VoxelRange range = triangleVoxelRange(triangle, resolution, kTileSlack);
+        if (range.empty()) continue;
+        const glm::ivec3 firstTile = range.first / tile, lastTile = range.last / tile;
+        for (int z = firstTile.z; z <= lastTile.z; ++z)
+            for (int y = firstTile.y; y <= lastTile.y; ++y)
+                for (int x = firstTile.x; x <= lastTile.x; ++x) {
+                    const glm::dvec3 center = glm::dvec3(x, y, z) * double(tile) + halfTile;
+                    if (triangleBoxSeparation(triangle, center, halfTile) > kTileSlack) continue;
+                    items.push_back({position, glsl::packTile(glm::uvec3(x, y, z))});
+                }
+    }
+    return items;
+}
+
+VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu,
+                           const glsl::VoxelGridParams& grid)
+    : context_(context) {
+    const uint32_t resolution = grid.resolution.x;
+    if (resolution == 0 || resolution % glsl::VOXELIZE_TILE != 0 || resolution > 1024 * glsl::VOXELIZE_TILE)
+        throw Error("the voxelizer needs a resolution that is a multiple of 4, up to 4096, not " +
+                    std::to_string(resolution));
+    checkVoxelizeMemory(context.memoryProperties, context.properties.limits, context.deviceName(), resolution);
+
+    const std::vector<glm::uvec2> items = buildVoxelizeWorkItems(scene, gpuTriangleOrder(scene, sceneGpu), grid);
+    const glm::uvec2 none(0u);
+    workItems =
+        uploadBuffer(context, items.empty() ? &none : items.data(),
+                     std::max<size_t>(items.size(), 1) * sizeof(glm::uvec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+
+    float largestEmission = 0.0f;
+    for (const Material& material : scene.materials)
+        largestEmission = std::max({largestEmission, material.emission.x, material.emission.y, material.emission.z});
+    params.grid = grid;
+    params.grid.resolution.z = uint32_t(scene.triangleCount());
+    params.grid.resolution.w = uint32_t(items.size());
+    if (largestEmission > 0.0f)
+        params.emission = glm::vec4(glsl::EMISSION_FIXED_MAX / largestEmission,
+                                    largestEmission / glsl::EMISSION_FIXED_MAX, 0.0f, 0.0f);
+    // Work items may outnumber the workgroups one dispatch row allows: fold them into rows.
+    const uint32_t rowLimit = context.properties.limits.maxComputeWorkGroupCount[0];
+    params.dispatch.x = std::clamp(uint32_t(items.size()), 1u, rowLimit);
+    workGroupRows = (uint32_t(items.size()) + params.dispatch.x - 1) / params.dispatch.x;
+
+    albedoOpacity = makeVoxelImage(context, resolution, kAlbedoFormat, "voxel albedo and opacity");
+    normal = makeVoxelImage(context, resolution, kHalfFormat, "voxel normal and count");
+    emission = makeVoxelImage(context, resolution, kHalfFormat, "voxel emission");
+    for (Buffer& channel : accumulation)
+        channel = Buffer(context, cube(resolution) * 4,
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
+    voxelizePipeline = makePipeline(context, "voxelize.comp", 5, 0);
+    resolvePipeline = makePipeline(context, "voxel_resolve.comp", 0, 3);
+}
+
+void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
+    const uint32_t resolution = params.grid.resolution.x;
+    // The previous frame's resolve may still read the sums: wait for it before clearing.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                  VK_ACCESS_2_NONE);
+    for (Buffer& channel : accumulation) vkCmdFillBuffer(commands, channel.buffer, 0, VK_WHOLE_SIZE, 0u);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    // Every texel is rewritten by the resolve, so the old contents can be discarded.
+    for (GpuImage* image : {&albedoOpacity, &normal, &emission})
+        imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    if (params.grid.resolution.w > 0) {
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
+        pushDescriptors(context_, commands, voxelizePipeline,
+                        {sceneGpu.vertices.buffer, sceneGpu.indices.buffer, sceneGpu.triangleMaterials.buffer,
+                         sceneGpu.materials.buffer, workItems.buffer},
+                        accumulation, {});
+        vkCmdPushConstants(commands, voxelizePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
+        vkCmdDispatch(commands, params.dispatch.x, workGroupRows, 1);
+        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    }
+
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.pipeline);
+    pushDescriptors(context_, commands, resolvePipeline, {}, accumulation,
+                    {albedoOpacity.view, normal.view, emission.view});
+    vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
+    const uint32_t groups = resolution / 4;
+    vkCmdDispatch(commands, groups, groups, groups);
+
+    for (GpuImage* image : {&albedoOpacity, &normal, &emission})
+        imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+}  // namespace vct

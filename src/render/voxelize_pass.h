@@ -1,0 +1,59 @@
+// Voxelizes the scene's triangles into a 3D grid: albedo and opacity, mean normal, emission.
+// Conservative (every voxel a triangle touches) and order-independent (integer sums); see
+// shaders_glsl/voxelize.h for the work split and the fixed-point scales, and voxelize_reference.h
+// for the CPU twin that specifies the result.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+#include "render/scene_gpu.h"
+#include "scene/scene.h"
+#include "voxelize.h"
+
+namespace vct {
+
+// Bytes a grid of resolution³ voxels needs on the GPU: the three images and the accumulation buffers.
+uint64_t voxelizeMemoryBytes(uint32_t resolution);
+
+// Throws a vct::Error naming the largest resolution that would fit when the grid needs more than
+// half of the device's largest device-local heap (the rest is left to the scene, the frame's
+// images and the radiance volume), or an accumulation buffer exceeds maxStorageBufferRange.
+void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
+                         const std::string& deviceName, uint32_t resolution);
+
+// The order SceneGpu stores the triangles in (stable by material), checked against its material ranges.
+std::vector<uint32_t> gpuTriangleOrder(const Scene& scene, const SceneGpu& sceneGpu);
+
+// The (triangle, packed tile) work items: for every non-degenerate triangle, the tiles of its voxel
+// bounding box (clipped to the grid) that the triangle may touch. `order[i]` is the scene triangle
+// stored at position i on the GPU; work items name positions.
+std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
+                                               const glsl::VoxelGridParams& grid);
+
+struct VoxelizePass {
+    // `scene` is the CPU copy of what `sceneGpu` holds: the work items are built from it, once.
+    VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu, const glsl::VoxelGridParams& grid);
+
+    // Clears the sums, voxelizes, resolves. Leaves the three images in GENERAL, visible to later
+    // compute and fragment shader reads (sampled or storage).
+    void record(VkCommandBuffer commands, const SceneGpu& sceneGpu);
+
+    glsl::VoxelizeParams params{};  // grid.resolution.z = triangles, .w = work items
+    GpuImage albedoOpacity;         // RGBA8 UNORM: mean linear base colour, opacity
+    GpuImage normal;                // RGBA16F: mean unit normal (not renormalized), triangle count
+    GpuImage emission;              // RGBA16F: mean emission (scene units), opacity
+    std::array<Buffer, glsl::ACCUM_CHANNELS> accumulation;  // uint per voxel each, cleared every record
+    Buffer workItems;                                       // uvec2 (triangle, packed tile)
+    uint32_t workGroupRows = 0;  // the voxelize dispatch is params.dispatch.x × workGroupRows
+    Pipeline voxelizePipeline;
+    Pipeline resolvePipeline;
+
+private:
+    GpuContext& context_;
+};
+
+}  // namespace vct
