@@ -1,0 +1,19 @@
+// Reading GPU images back to the CPU, for tests and debugging.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/resources.h"
+
+namespace vct {
+
+// The texels of one mip level of a 3D image as floats, index x + w·(y + h·z). Handles
+// R8G8B8A8_UNORM, R16G16B16A16_SFLOAT and R32G32B32A32_SFLOAT (anything else is a vct::Error).
+// `currentLayout` is the layout the image is in; it is left in that layout afterwards, and all
+// earlier GPU writes to it are waited for.
+std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, uint32_t mip,
+                                   VkImageLayout currentLayout);
+
+}  // namespace vct
