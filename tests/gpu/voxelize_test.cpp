@@ -1,0 +1,489 @@
+// The voxelize pass against its CPU twin (render/voxelize_reference.h), voxel for voxel, and the
+// properties the twin cannot show by itself: closed shells, averaging, order independence, no NaN.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include "error.h"
+#include "gpu/commands.h"
+#include "gpu/readback.h"
+#include "gpu/timing.h"
+#include "gpu_test.h"
+#include "render/scene_gpu.h"
+#include "render/voxel_grid_fit.h"
+#include "render/voxelize_pass.h"
+#include "render/voxelize_reference.h"
+#include "scene/load.h"
+
+namespace vct {
+namespace {
+
+// Tolerances of the GPU against the exact averages of the twin.
+constexpr float kAlbedoTolerance = 0.6f / 255.0f;  // UNORM8 rounding plus the 2^-15 fixed point
+constexpr float kNormalTolerance = 2e-3f;          // half float (2^-11 relative) plus 2^-14 fixed point
+constexpr float kEmissionTolerance = 2e-3f;        // relative to the scene's largest emission
+// Voxels whose decision margin in double is below this (grid units) may legitimately differ
+// between float and double; they are counted, and must stay a tiny fraction.
+constexpr double kAmbiguousMargin = 1e-5;
+constexpr double kMaxAmbiguousFraction = 1e-3;
+
+using TriangleF = std::array<glm::vec3, 3>;
+
+struct TestMaterial {
+    glm::vec3 albedo{0.8f};
+    glm::vec3 emission{0.0f};
+};
+
+Scene makeScene(const std::vector<TriangleF>& triangles, const std::vector<uint32_t>& materialOfTriangle = {},
+                const std::vector<TestMaterial>& materials = {TestMaterial{}}) {
+    Scene scene;
+    scene.name = "voxelize test";
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        for (const glm::vec3& corner : triangles[t]) {
+            scene.indices.push_back(uint32_t(scene.vertices.size()));
+            Vertex vertex;
+            vertex.position = corner;
+            scene.vertices.push_back(vertex);
+        }
+        scene.triangleMaterials.push_back(materialOfTriangle.empty() ? 0u : materialOfTriangle[t]);
+    }
+    for (const TestMaterial& test : materials) {
+        Material material;
+        material.baseColorFactor = glm::vec4(test.albedo, 1.0f);
+        material.emission = test.emission;
+        scene.materials.push_back(material);
+    }
+    return scene;
+}
+
+// Origin 0 and a power-of-two voxel size: grid coordinates are exact in float.
+glsl::VoxelGridParams exactGrid(uint32_t resolution, float voxelSize = 1.0f) {
+    glsl::VoxelGridParams grid{};
+    grid.originVoxelSize = glm::vec4(0.0f, 0.0f, 0.0f, voxelSize);
+    grid.resolution = glm::uvec4(resolution, 1u, 0u, 0u);
+    return grid;
+}
+
+struct VoxelImages {
+    std::vector<glm::vec4> albedoOpacity, normal, emission;
+    size_t workItems = 0;
+    std::vector<PassTime> times;
+};
+
+VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid, int timedRuns = 0) {
+    GpuContext& context = test::gpu();
+    SceneGpu sceneGpu(context, scene);
+    VoxelizePass pass(context, scene, sceneGpu, grid);
+    GpuTimer timer(context);
+    for (int run = 0; run <= timedRuns; ++run)  // run 0 warms up, the last one is timed
+        submitAndWait(context, [&](VkCommandBuffer commands) {
+            timer.reset(commands);
+            timer.begin(commands, "voxelize");
+            pass.record(commands, sceneGpu);
+            timer.end(commands);
+        });
+    VoxelImages images;
+    images.albedoOpacity = readImage3D(context, pass.albedoOpacity, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.normal = readImage3D(context, pass.normal, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.emission = readImage3D(context, pass.emission, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.workItems = pass.params.grid.resolution.w;
+    images.times = timer.results();
+    return images;
+}
+
+std::string voxelName(const VoxelReference& reference, size_t i) {
+    const size_t n = reference.resolution;
+    std::ostringstream name;
+    name << "voxel (" << i % n << ", " << (i / n) % n << ", " << i / (n * n) << ")";
+    return name.str();
+}
+
+struct Comparison {
+    size_t occupied = 0, ambiguous = 0, mismatches = 0;
+    std::string firstMismatch;
+};
+
+// Occupancy, count and averaged attributes of every voxel, except those within `ambiguousMargin`
+// of flipping in double precision.
+Comparison compareWithTwin(const VoxelImages& gpu, const VoxelReference& twin, double ambiguousMargin,
+                           float largestEmission = 1.0f) {
+    Comparison result;
+    for (size_t i = 0; i < twin.count.size(); ++i) {
+        if (twin.count[i] > 0) ++result.occupied;
+        if (twin.decisionMargin[i] < ambiguousMargin) {
+            ++result.ambiguous;
+            continue;
+        }
+        std::ostringstream problem;
+        const glm::vec4 albedo = gpu.albedoOpacity[i], normal = gpu.normal[i], emission = gpu.emission[i];
+        const float opacity = twin.count[i] > 0 ? 1.0f : 0.0f;
+        if (albedo.a != opacity)
+            problem << "opacity " << albedo.a << ", the twin says " << opacity;
+        else if (normal.w != float(twin.count[i]))
+            problem << "count " << normal.w << ", the twin says " << twin.count[i];
+        for (int c = 0; c < 3 && problem.str().empty(); ++c) {
+            if (std::abs(albedo[c] - float(twin.albedo[i][c])) > kAlbedoTolerance)
+                problem << "albedo[" << c << "] " << albedo[c] << ", the twin says " << twin.albedo[i][c];
+            else if (std::abs(normal[c] - float(twin.normal[i][c])) > kNormalTolerance)
+                problem << "normal[" << c << "] " << normal[c] << ", the twin says " << twin.normal[i][c];
+            else if (std::abs(emission[c] - float(twin.emission[i][c])) > kEmissionTolerance * largestEmission)
+                problem << "emission[" << c << "] " << emission[c] << ", the twin says " << twin.emission[i][c];
+        }
+        if (problem.str().empty()) continue;
+        if (result.mismatches++ == 0) result.firstMismatch = voxelName(twin, i) + ": " + problem.str();
+    }
+    return result;
+}
+
+void expectMatchesTwin(const Scene& scene, const glsl::VoxelGridParams& grid, double ambiguousMargin,
+                       float largestEmission = 1.0f) {
+    const VoxelImages gpu = voxelizeOnGpu(scene, grid);
+    const VoxelReference twin = voxelizeReference(scene, grid);
+    const Comparison comparison = compareWithTwin(gpu, twin, ambiguousMargin, largestEmission);
+    EXPECT_GT(comparison.occupied, 0u);
+    EXPECT_EQ(comparison.mismatches, 0u) << comparison.firstMismatch;
+    EXPECT_LE(double(comparison.ambiguous), kMaxAmbiguousFraction * double(comparison.occupied))
+        << comparison.ambiguous << " ambiguous voxels of " << comparison.occupied << " occupied";
+}
+
+// An independent check of conservativeness: the voxel holding any point of the triangle is marked.
+void expectSampledPointsMarked(const Scene& scene, const glsl::VoxelGridParams& grid, const VoxelImages& gpu) {
+    const int n = int(grid.resolution.x);
+    size_t missed = 0;
+    for (size_t t = 0; t < scene.triangleCount(); ++t) {
+        if (isDegenerateTriangle(scene, t)) continue;
+        const TriangleD triangle = gridTriangle(scene, grid, t);
+        const int steps = 64;
+        for (int a = 0; a <= steps; ++a)
+            for (int b = 0; a + b <= steps; ++b) {
+                const double u = double(a) / steps, v = double(b) / steps;
+                const glm::dvec3 p = triangle[0] + u * (triangle[1] - triangle[0]) + v * (triangle[2] - triangle[0]);
+                const glm::ivec3 voxel(glm::floor(p));
+                if (glm::any(glm::lessThan(voxel, glm::ivec3(0))) ||
+                    glm::any(glm::greaterThanEqual(voxel, glm::ivec3(n))))
+                    continue;
+                if (gpu.albedoOpacity[size_t(voxel.x) + size_t(n) * (size_t(voxel.y) + size_t(n) * size_t(voxel.z))]
+                        .a != 1.0f)
+                    ++missed;
+            }
+    }
+    EXPECT_EQ(missed, 0u) << "points of a triangle lie in voxels the GPU left empty";
+}
+
+glm::vec3 randomUnitVector(std::mt19937& random) {
+    std::normal_distribution<float> normal;
+    return glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+}
+
+class Voxelize : public test::GpuTest {};
+
+TEST_F(Voxelize, RandomTrianglesMatchTheCpuTwinVoxelForVoxel) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> position(-0.5f, 3.7f), size(0.02f, 1.5f);
+    std::vector<TriangleF> triangles;
+    std::vector<uint32_t> materials;
+    for (int t = 0; t < 300; ++t) {
+        const glm::vec3 center(position(random), position(random), position(random));
+        const float extent = size(random);
+        triangles.push_back({center + extent * randomUnitVector(random), center + extent * randomUnitVector(random),
+                             center + extent * randomUnitVector(random)});
+        materials.push_back(uint32_t(t % 3));
+    }
+    const Scene scene =
+        makeScene(triangles, materials,
+                  {{{0.9f, 0.1f, 0.1f}, {}}, {{0.1f, 0.9f, 0.2f}, {2.0f, 1.0f, 0.0f}}, {glm::vec3(0.5f), {}}});
+    // A grid whose origin and voxel size are not exact in float: conversion rounds differently.
+    glsl::VoxelGridParams grid{};
+    grid.originVoxelSize = glm::vec4(-0.3f, -0.2f, -0.1f, 0.11f);
+    grid.resolution = glm::uvec4(32, 1, 0, 0);
+    expectMatchesTwin(scene, grid, kAmbiguousMargin, 2.0f);
+    expectSampledPointsMarked(scene, grid, voxelizeOnGpu(scene, grid));
+}
+
+TEST_F(Voxelize, SliverTriangleMarksEveryTouchedVoxel) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> position(6.0f, 26.0f), width(1e-4f, 5e-2f);
+    std::vector<TriangleF> triangles;
+    for (int t = 0; t < 40; ++t) {
+        const glm::vec3 start(position(random), position(random), position(random));
+        const glm::vec3 end(position(random), position(random), position(random));
+        const glm::vec3 across = glm::normalize(glm::cross(end - start, randomUnitVector(random)));
+        triangles.push_back({start, end, glm::mix(start, end, 0.37f) + width(random) * across});
+    }
+    const Scene scene = makeScene(triangles);
+    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+    expectSampledPointsMarked(scene, exactGrid(32), voxelizeOnGpu(scene, exactGrid(32)));
+}
+
+TEST_F(Voxelize, TriangleOnVoxelFaceMarksTheVoxelsOnBothSides) {
+    // In the plane x = 8, with corners on voxel corners: exact, so no voxel is excused.
+    const Scene scene = makeScene({{glm::vec3(8, 2, 3), glm::vec3(8, 12, 3), glm::vec3(8, 2, 13)}});
+    expectMatchesTwin(scene, exactGrid(32), 0.0);
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    const auto opacity = [&](int x, int y, int z) {
+        return gpu.albedoOpacity[size_t(x) + 32 * (size_t(y) + 32 * size_t(z))].a;
+    };
+    for (int x : {7, 8}) {
+        EXPECT_EQ(opacity(x, 2, 3), 1.0f) << x;
+        EXPECT_EQ(opacity(x, 6, 6), 1.0f) << x;
+        EXPECT_EQ(opacity(x, 1, 2), 1.0f) << x << ": the corner (8, 2, 3) touches this voxel";
+    }
+    for (int x : {6, 9}) EXPECT_EQ(opacity(x, 6, 6), 0.0f) << x;
+}
+
+TEST_F(Voxelize, TriangleOnVoxelEdgesMarksEveryVoxelAroundTheEdge) {
+    // The plane x = y holds the voxel edges {x = y = i}; the triangle's own edges run along voxel
+    // edges too. Box [i, i+1] × [j, j+1] touches the plane iff |i − j| ≤ 1.
+    const Scene scene = makeScene({{glm::vec3(2, 2, 1), glm::vec3(20, 20, 1), glm::vec3(2, 2, 19)},
+                                   {glm::vec3(4, 9, 22), glm::vec3(16, 9, 22), glm::vec3(4, 9, 28)}});
+    expectMatchesTwin(scene, exactGrid(32), 0.0);
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    const auto opacity = [&](int x, int y, int z) {
+        return gpu.albedoOpacity[size_t(x) + 32 * (size_t(y) + 32 * size_t(z))].a;
+    };
+    EXPECT_EQ(opacity(5, 5, 3), 1.0f);
+    EXPECT_EQ(opacity(4, 5, 3), 1.0f);
+    EXPECT_EQ(opacity(5, 4, 3), 1.0f);
+    EXPECT_EQ(opacity(3, 5, 3), 0.0f);
+    // The second triangle lies in y = 9 with its edge on z = 22: voxels y 8 and 9, z 21 and 22.
+    for (int y : {8, 9})
+        for (int z : {21, 22}) EXPECT_EQ(opacity(10, y, z), 1.0f) << y << " " << z;
+    EXPECT_EQ(opacity(10, 9, 20), 0.0f);
+}
+
+TEST_F(Voxelize, TriangleLargerThanTheGridIsClippedToIt) {
+    const Scene scene = makeScene(
+        {{glm::vec3(-200.0f, -150.0f, -90.0f), glm::vec3(250.0f, 40.0f, 30.0f), glm::vec3(-60.0f, 230.0f, 120.0f)}});
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    // Only tiles the plane crosses inside the grid: far fewer than the 8³ tiles of the grid.
+    EXPECT_GT(gpu.workItems, 0u);
+    EXPECT_LT(gpu.workItems, 8u * 8u * 8u / 2u);
+    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
+// 6-connected flood fill through empty voxels from the grid's corner; returns the reached mask.
+std::vector<bool> floodFromOutside(const std::vector<glm::vec4>& albedoOpacity, int n) {
+    std::vector<bool> reached(albedoOpacity.size(), false);
+    std::vector<glm::ivec3> stack = {glm::ivec3(0)};
+    reached[0] = true;
+    const glm::ivec3 steps[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    while (!stack.empty()) {
+        const glm::ivec3 voxel = stack.back();
+        stack.pop_back();
+        for (const glm::ivec3& step : steps) {
+            const glm::ivec3 next = voxel + step;
+            if (glm::any(glm::lessThan(next, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(next, glm::ivec3(n))))
+                continue;
+            const size_t i = size_t(next.x) + size_t(n) * (size_t(next.y) + size_t(n) * size_t(next.z));
+            if (reached[i] || albedoOpacity[i].a > 0.0f) continue;
+            reached[i] = true;
+            stack.push_back(next);
+        }
+    }
+    return reached;
+}
+
+std::vector<TriangleF> icosphere(glm::vec3 center, float radius, int subdivisions) {
+    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    std::vector<glm::vec3> v = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<std::array<glm::vec3, 3>> faces;
+    const int f[20][3] = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                          {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (const auto& face : f)
+        faces.push_back({glm::normalize(v[face[0]]), glm::normalize(v[face[1]]), glm::normalize(v[face[2]])});
+    for (int s = 0; s < subdivisions; ++s) {
+        std::vector<std::array<glm::vec3, 3>> finer;
+        for (const auto& [a, b, c] : faces) {
+            // Midpoints computed the same way on both sides of an edge, so neighbours share vertices exactly.
+            const auto mid = [](glm::vec3 p, glm::vec3 q) {
+                return glm::normalize(glm::all(glm::lessThan(p, q)) ? p + q : q + p);
+            };
+            const glm::vec3 ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            finer.insert(finer.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
+        }
+        faces = finer;
+    }
+    std::vector<TriangleF> triangles;
+    for (const auto& [a, b, c] : faces)
+        triangles.push_back({center + radius * a, center + radius * b, center + radius * c});
+    return triangles;
+}
+
+TEST_F(Voxelize, ClosedSphereGivesAShellWithoutHoles) {
+    const Scene scene = makeScene(icosphere(glm::vec3(16.1f, 15.7f, 16.3f), 11.3f, 3));
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    const std::vector<bool> outside = floodFromOutside(gpu.albedoOpacity, 32);
+    EXPECT_FALSE(outside[16 + 32 * (16 + 32 * 16)]) << "the flood from outside reached the sphere's centre";
+    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
+TEST_F(Voxelize, ClosedRotatedCubeGivesAShellWithoutHoles) {
+    const glm::mat3 rotation = glm::mat3(glm::vec3(0.36f, 0.48f, -0.8f), glm::vec3(-0.8f, 0.6f, 0.0f),
+                                         glm::vec3(0.48f, 0.64f, 0.6f));  // an orthonormal basis
+    std::vector<TriangleF> triangles;
+    const auto corner = [&](int i) {
+        return glm::vec3(16.2f, 15.9f, 16.05f) +
+               rotation * (9.0f * glm::vec3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
+    };
+    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (const auto& q : quads) {
+        triangles.push_back({corner(q[0]), corner(q[1]), corner(q[2])});
+        triangles.push_back({corner(q[0]), corner(q[2]), corner(q[3])});
+    }
+    const Scene scene = makeScene(triangles);
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    EXPECT_FALSE(floodFromOutside(gpu.albedoOpacity, 32)[16 + 32 * (16 + 32 * 16)]);
+    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
+TEST_F(Voxelize, TrianglesSharingAVoxelAverageTheirAttributes) {
+    // Two small triangles inside voxel (5, 5, 5), red facing +z and blue facing +x, different emission.
+    const Scene scene =
+        makeScene({{glm::vec3(5.25f, 5.25f, 5.5f), glm::vec3(5.75f, 5.25f, 5.5f), glm::vec3(5.25f, 5.75f, 5.5f)},
+                   {glm::vec3(5.5f, 5.25f, 5.25f), glm::vec3(5.5f, 5.75f, 5.25f), glm::vec3(5.5f, 5.25f, 5.75f)}},
+                  {0, 1}, {{{1.0f, 0.0f, 0.0f}, {4.0f, 0.0f, 0.0f}}, {{0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 2.0f}}});
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    const size_t voxel = 5 + 32 * (5 + 32 * 5);
+    EXPECT_NEAR(gpu.albedoOpacity[voxel].r, 0.5f, kAlbedoTolerance);
+    EXPECT_NEAR(gpu.albedoOpacity[voxel].b, 0.5f, kAlbedoTolerance);
+    EXPECT_EQ(gpu.albedoOpacity[voxel].a, 1.0f);
+    EXPECT_NEAR(gpu.normal[voxel].x, 0.5f, kNormalTolerance);
+    EXPECT_NEAR(gpu.normal[voxel].z, 0.5f, kNormalTolerance);
+    EXPECT_EQ(gpu.normal[voxel].w, 2.0f);
+    EXPECT_NEAR(gpu.emission[voxel].r, 2.0f, kEmissionTolerance * 4.0f);
+    EXPECT_NEAR(gpu.emission[voxel].b, 1.0f, kEmissionTolerance * 4.0f);
+}
+
+TEST_F(Voxelize, ThinTwoSidedWallAveragesItsNormalsToNearZero) {
+    const glm::vec3 a(3.5f, 3.25f, 3.25f), b(3.5f, 3.75f, 3.25f), c(3.5f, 3.25f, 3.75f);
+    const VoxelImages gpu = voxelizeOnGpu(makeScene({{a, b, c}, {a, c, b}}), exactGrid(32));
+    const glm::vec4 normal = gpu.normal[3 + 32 * (3 + 32 * 3)];
+    EXPECT_EQ(normal.w, 2.0f);
+    EXPECT_LT(glm::length(glm::vec3(normal)), kNormalTolerance) << "opposite faces in one voxel cancel";
+}
+
+TEST_F(Voxelize, ImagesDoNotDependOnTriangleOrder) {
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> position(0.0f, 32.0f);
+    std::vector<TriangleF> triangles;
+    std::vector<uint32_t> materials;
+    for (int t = 0; t < 400; ++t) {
+        const glm::vec3 center(position(random), position(random), position(random));
+        triangles.push_back({center + 3.0f * randomUnitVector(random), center + 3.0f * randomUnitVector(random),
+                             center + 3.0f * randomUnitVector(random)});
+        materials.push_back(uint32_t(t % 4));
+    }
+    const std::vector<TestMaterial> palette = {{{0.9f, 0.3f, 0.1f}, {1.0f, 3.0f, 0.5f}},
+                                               {{0.2f, 0.7f, 0.33f}, {}},
+                                               {{0.123f, 0.456f, 0.789f}, {7.0f, 0.0f, 0.1f}},
+                                               {glm::vec3(1.0f), {}}};
+    const VoxelImages first = voxelizeOnGpu(makeScene(triangles, materials, palette), exactGrid(32));
+    std::vector<size_t> order(triangles.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::shuffle(order.begin(), order.end(), random);
+    std::vector<TriangleF> shuffledTriangles;
+    std::vector<uint32_t> shuffledMaterials;
+    for (size_t i : order) {
+        shuffledTriangles.push_back(triangles[i]);
+        shuffledMaterials.push_back(materials[i]);
+    }
+    const VoxelImages second = voxelizeOnGpu(makeScene(shuffledTriangles, shuffledMaterials, palette), exactGrid(32));
+    const auto identical = [](const std::vector<glm::vec4>& x, const std::vector<glm::vec4>& y) {
+        return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(glm::vec4)) == 0;
+    };
+    EXPECT_TRUE(identical(first.albedoOpacity, second.albedoOpacity));
+    EXPECT_TRUE(identical(first.normal, second.normal));
+    EXPECT_TRUE(identical(first.emission, second.emission));
+}
+
+TEST_F(Voxelize, DegenerateTrianglesMarkNothingAndNothingIsNaN) {
+    // Coincident corners, collinear corners, a huge emitter and a tiny (but not degenerate) triangle.
+    const Scene scene = makeScene({{glm::vec3(4, 4, 4), glm::vec3(4, 4, 4), glm::vec3(4, 4, 4)},
+                                   {glm::vec3(1, 1, 1), glm::vec3(9, 9, 9), glm::vec3(5, 5, 5)},
+                                   {glm::vec3(20.3f, 20.1f, 20.2f), glm::vec3(20.3f + 1e-6f, 20.1f, 20.2f),
+                                    glm::vec3(20.3f, 20.1f + 1e-6f, 20.2f)}},
+                                  {}, {{{2.0f, -1.0f, 0.5f}, {1e9f, 0.0f, 1.0f}}});
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    size_t occupied = 0;
+    for (const auto* image : {&gpu.albedoOpacity, &gpu.normal, &gpu.emission})
+        for (const glm::vec4& texel : *image)
+            ASSERT_TRUE(std::isfinite(texel.x) && std::isfinite(texel.y) && std::isfinite(texel.z) &&
+                        std::isfinite(texel.w));
+    for (const glm::vec4& texel : gpu.albedoOpacity) occupied += texel.a > 0.0f;
+    EXPECT_EQ(occupied, 1u) << "only the tiny triangle marks a voxel";
+    EXPECT_EQ(gpu.albedoOpacity[20 + 32 * (20 + 32 * 20)].a, 1.0f);
+    const VoxelReference twin = voxelizeReference(scene, exactGrid(32));
+    EXPECT_EQ(std::count_if(twin.count.begin(), twin.count.end(), [](uint32_t c) { return c > 0; }), 1);
+}
+
+TEST_F(Voxelize, EmptySceneGivesAnEmptyGrid) {
+    const VoxelImages gpu = voxelizeOnGpu(makeScene({}), exactGrid(32));
+    EXPECT_EQ(gpu.workItems, 0u);
+    for (const auto* image : {&gpu.albedoOpacity, &gpu.normal, &gpu.emission})
+        for (const glm::vec4& texel : *image) ASSERT_EQ(texel, glm::vec4(0.0f));
+}
+
+TEST_F(Voxelize, SixtyFiveThousandTrianglesInOneVoxelDoNotOverflow) {
+    // The largest values each sum can receive, 70 000 times over (more than the 65 535 promised).
+    const TriangleF triangle = {glm::vec3(5.1f, 5.1f, 5.5f), glm::vec3(5.9f, 5.1f, 5.5f), glm::vec3(5.1f, 5.9f, 5.5f)};
+    const std::vector<TriangleF> triangles(70000, triangle);
+    const VoxelImages gpu =
+        voxelizeOnGpu(makeScene(triangles, {}, {{glm::vec3(1.0f), {3.0f, 3.0f, 3.0f}}}), exactGrid(32));
+    const size_t voxel = 5 + 32 * (5 + 32 * 5);
+    EXPECT_EQ(gpu.albedoOpacity[voxel], glm::vec4(1.0f));
+    EXPECT_NEAR(gpu.normal[voxel].z, 1.0f, kNormalTolerance);
+    EXPECT_EQ(gpu.normal[voxel].w, 65504.0f) << "the count saturates at the largest half float";
+    EXPECT_NEAR(gpu.emission[voxel].g, 3.0f, kEmissionTolerance * 3.0f);
+}
+
+TEST_F(Voxelize, CornellBoxMatchesTheCpuTwin) {
+    const Scene scene = loadScene("cornell");
+    for (uint32_t resolution : {64u, 128u}) {
+        // The fitted grid puts the walls exactly on voxel faces (one voxel of margin), where float
+        // rounding of the grid coordinates decides: those voxels are ambiguous by construction.
+        // Shifted by a fraction of a voxel, the walls leave the faces and nearly nothing is ambiguous.
+        glsl::VoxelGridParams grid = fitVoxelGrid(scene.bounds(), resolution);
+        const VoxelImages fitted = voxelizeOnGpu(scene, grid, 2);
+        for (const PassTime& time : fitted.times)
+            std::cout << "cornell " << resolution << "³: " << time.name << " " << time.milliseconds << " ms on "
+                      << test::gpu().deviceName() << ", " << fitted.workItems << " work items\n";
+        const Comparison onFaces = compareWithTwin(fitted, voxelizeReference(scene, grid), kAmbiguousMargin);
+        EXPECT_EQ(onFaces.mismatches, 0u) << resolution << ": " << onFaces.firstMismatch;
+
+        grid.originVoxelSize -= glm::vec4(glm::vec3(0.37f * grid.originVoxelSize.w), 0.0f);
+        const Comparison shifted =
+            compareWithTwin(voxelizeOnGpu(scene, grid), voxelizeReference(scene, grid), kAmbiguousMargin);
+        EXPECT_EQ(shifted.mismatches, 0u) << resolution << ": " << shifted.firstMismatch;
+        EXPECT_LE(double(shifted.ambiguous), kMaxAmbiguousFraction * double(shifted.occupied))
+            << shifted.ambiguous << " ambiguous voxels of " << shifted.occupied << " occupied";
+    }
+}
+
+TEST(VoxelizeMemory, GridTooLargeForTheHeapNamesAResolutionThatFits) {
+    VkPhysicalDeviceMemoryProperties memory{};
+    memory.memoryHeapCount = 1;
+    memory.memoryHeaps[0] = {VkDeviceSize(1) << 30, VK_MEMORY_HEAP_DEVICE_LOCAL_BIT};  // 1 GiB
+    VkPhysicalDeviceLimits limits{};
+    limits.maxStorageBufferRange = 0xFFFFFFFFu;
+    EXPECT_NO_THROW(checkVoxelizeMemory(memory, limits, "a small GPU", 128));
+    try {
+        checkVoxelizeMemory(memory, limits, "a small GPU", 512);
+        FAIL() << "a 512³ grid cannot fit in half a gigabyte";
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what()).find("a small GPU"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("a 128³ grid would fit"), std::string::npos) << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace vct
