@@ -32,6 +32,8 @@ static void printHelp() {
                 "  --no-guide               start without the usage guide\n"
                 "  --events TEXT            scripted input, e.g. \"2 key W down; 5 key W up\" (see src/view/input.h)\n"
                 "  --script FILE            the same, read from a file\n"
+                "  --render-scale 1|0.5|0.25   image size relative to the window (default 1; 0.5 on a\n"
+                "                           software rasterizer such as lavapipe)\n"
                 "  --render-every-frame     redraw even when nothing changed (for measuring)\n"
                 "\nThe window's default size is 960x540, one sample per pixel and a 2048 sun shadow map;\n"
                 "press F1 in the window for the controls.\n",
@@ -50,7 +52,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     std::set<std::string> flags = sceneFlagNames();
     flags.insert({"help", "no-vsync", "screenshot-ui", "no-guide", "render-every-frame"});
     std::set<std::string> valued = sceneOptionNames();
-    valued.insert({"exposure", "screenshot", "frames", "events", "script"});
+    valued.insert({"exposure", "screenshot", "frames", "events", "script", "render-scale"});
     const Arguments arguments(rawArguments, flags, valued);
     if (arguments.has("help")) {
         printHelp();
@@ -68,6 +70,11 @@ int runView(const std::vector<std::string>& rawArguments) {
     options.vsync = !arguments.has("no-vsync");
     options.showGuide = !arguments.has("no-guide");
     options.renderEveryFrame = arguments.has("render-every-frame");
+    // 0 = not given: the viewer picks 1, or 0.5 on a software rasterizer.
+    options.renderScale = arguments.number("render-scale", 0.0f, 0.25f, 1.0f);
+    if (arguments.has("render-scale") && options.renderScale != 1.0f && options.renderScale != 0.5f &&
+        options.renderScale != 0.25f)
+        throw Error("--render-scale must be 1, 0.5 or 0.25");
     options.screenshotPath = arguments.text("screenshot", "");
     options.screenshotWithUi = arguments.has("screenshot-ui");
     if (arguments.has("frames") && options.screenshotPath.empty()) throw Error("--frames needs --screenshot FILE.png");

@@ -66,7 +66,6 @@ static void sceneSection(ViewerState& state) {
     ImGui::SameLine();
     if (ImGui::Button("Load") && state.scenePathField[0] != '\0') state.requestedScene = state.scenePathField;
     ImGui::TextDisabled("or drop a .gltf/.glb file on the window");
-    if (!state.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", state.error.c_str());
 }
 
 static void lightSection(ViewerState& state) {
@@ -124,7 +123,11 @@ static void coneSection(RenderSettings& settings) {
 
 static void resolutionSection(ViewerState& state) {
     RenderSettings& settings = state.settings;
-    if (!ImGui::CollapsingHeader("Resolution (rebuilds the renderer)")) return;
+    if (!ImGui::CollapsingHeader("Resolution")) return;
+    ImGui::TextDisabled("all but the render scale build a new renderer");
+    int scale = state.renderScale >= 1.0f ? 0 : state.renderScale >= 0.5f ? 1 : 2;
+    ImGui::Combo("render scale", &scale, "1 (window size)\0" "1/2\0" "1/4\0");
+    state.renderScale = scale == 0 ? 1.0f : scale == 1 ? 0.5f : 0.25f;
     powerOfTwoCombo("voxels", settings.voxelResolution, 32, 512);
     powerOfTwoCombo("sun shadow map", settings.sunShadowMapSize, 256, 8192);
     powerOfTwoCombo("local shadow map", settings.localShadowMapSize, 128, 4096);
@@ -218,13 +221,29 @@ void drawProfilerWindow(const ViewerState& state, const UiFacts& facts) {
     if (history.lastFrameIdle) ImGui::TextDisabled("this frame: nothing changed, image reused");
     ImGui::Text("present (tone map + UI) %.2f ms GPU", history.presentMilliseconds);
     ImGui::Separator();
-    ImGui::Text("%ux%u, %s", facts.width, facts.height, facts.presentMode.c_str());
+    ImGui::Text("window %ux%u, image %ux%u, %s", facts.width, facts.height, facts.renderWidth, facts.renderHeight,
+                facts.presentMode.c_str());
     ImGui::Text("voxels %u^3 = %.1f M, %u mips", facts.voxelResolution,
                 double(facts.voxelResolution) * facts.voxelResolution * facts.voxelResolution / 1e6, facts.voxelMips);
     ImGui::Text("%zu triangles, %zu lights", facts.triangles, facts.lights);
     ImGui::Text("device memory %.1f MiB", double(facts.deviceMemoryBytes) / (1024.0 * 1024.0));
     ImGui::TextDisabled("%s", facts.deviceName.c_str());
     ImGui::End();
+}
+
+void drawErrorWindow(ViewerState& state) {
+    if (state.error.empty()) return;
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, 8.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(viewport->Size.x * 0.8f, viewport->Size.y * 0.5f));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.92f));
+    ImGui::Begin("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushTextWrapPos(viewport->Size.x * 0.75f);
+    ImGui::TextUnformatted(state.error.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("dismiss")) state.error.clear();
+    ImGui::End();
+    ImGui::PopStyleColor();
 }
 
 void drawGuideWindow(ViewerState& state) {

@@ -11,7 +11,8 @@ namespace vct {
 struct UiFacts {
     std::string deviceName;
     std::string presentMode;
-    uint32_t width = 0, height = 0;
+    uint32_t width = 0, height = 0;              // the window
+    uint32_t renderWidth = 0, renderHeight = 0;  // the renderer's image
     uint32_t voxelResolution = 0;
     uint32_t voxelMips = 1;
     uint64_t deviceMemoryBytes = 0;
@@ -22,5 +23,7 @@ struct UiFacts {
 void drawSettingsWindow(ViewerState& state, const UiFacts& facts);
 void drawProfilerWindow(const ViewerState& state, const UiFacts& facts);
 void drawGuideWindow(ViewerState& state);
+// The last failure the user caused (a scene that did not load), until dismissed.
+void drawErrorWindow(ViewerState& state);
 
 }  // namespace vct

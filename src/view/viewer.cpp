@@ -25,120 +25,10 @@
 #include "view/swapchain.h"
 #include "view/ui.h"
 #include "view/viewer_state.h"
+#include "view/window.h"
 
 namespace vct {
 namespace {
-
-// ---- Ownership of the window-side objects, destroyed in reverse order of creation.
-
-struct GlfwSession {
-    GlfwSession() {
-        glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
-        if (!glfwInit()) throw Error("cannot open a window: GLFW found no display (set DISPLAY, or run under xvfb-run)");
-        if (!glfwVulkanSupported()) {
-            glfwTerminate();
-            throw Error("cannot open a window: GLFW found no Vulkan loader with surface support");
-        }
-    }
-    ~GlfwSession() { glfwTerminate(); }
-};
-
-struct Window {
-    Window(uint32_t width, uint32_t height) {
-        glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-        glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
-        handle = glfwCreateWindow(int(width), int(height), "vct view", nullptr, nullptr);
-        if (!handle) throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " window");
-    }
-    ~Window() { glfwDestroyWindow(handle); }
-    GLFWwindow* handle = nullptr;
-};
-
-struct Surface {
-    Surface(GpuContext& context, GLFWwindow* window) : instance(context.instance) {
-        VK_CHECK(glfwCreateWindowSurface(instance, window, nullptr, &surface));
-    }
-    ~Surface() { vkDestroySurfaceKHR(instance, surface, nullptr); }
-    VkInstance instance;
-    VkSurfaceKHR surface = VK_NULL_HANDLE;
-};
-
-// One command buffer for the present pass; one frame in flight (the renderer waits for its own
-// work anyway, so more would not overlap anything).
-struct PresentCommands {
-    explicit PresentCommands(GpuContext& context) : device(context.device) {
-        VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-        poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-        poolInfo.queueFamilyIndex = context.queueFamily;
-        VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-        VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        allocateInfo.commandPool = pool;
-        allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        allocateInfo.commandBufferCount = 1;
-        VK_CHECK(vkAllocateCommandBuffers(device, &allocateInfo, &commands));
-        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-        VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
-        const VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        VK_CHECK(vkCreateSemaphore(device, &semaphoreInfo, nullptr, &imageAcquired));
-    }
-    ~PresentCommands() {
-        vkDestroySemaphore(device, imageAcquired, nullptr);
-        vkDestroyFence(device, fence, nullptr);
-        vkDestroyCommandPool(device, pool, nullptr);
-    }
-    VkDevice device;
-    VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandBuffer commands = VK_NULL_HANDLE;
-    VkFence fence = VK_NULL_HANDLE;
-    VkSemaphore imageAcquired = VK_NULL_HANDLE;
-};
-
-// Dear ImGui with its GLFW and Vulkan backends; the descriptor pool holds the font texture's set.
-struct ImGuiSession {
-    ImGuiSession(GpuContext& context, GLFWwindow* window, const Swapchain& swapchain, VkRenderPass renderPass)
-        : device(context.device) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
-        ImGui::StyleColorsDark();
-        ImGui::GetStyle().WindowRounding = 4.0f;
-        ImGui_ImplGlfw_InitForVulkan(window, true);  // chains to the viewer's own callbacks
-
-        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
-        VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-        poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
-        poolInfo.maxSets = 4;
-        poolInfo.poolSizeCount = 1;
-        poolInfo.pPoolSizes = &size;
-        VK_CHECK(vkCreateDescriptorPool(device, &poolInfo, nullptr, &descriptorPool));
-
-        ImGui_ImplVulkan_InitInfo info{};
-        info.Instance = context.instance;
-        info.PhysicalDevice = context.physicalDevice;
-        info.Device = context.device;
-        info.QueueFamily = context.queueFamily;
-        info.Queue = context.queue;
-        info.DescriptorPool = descriptorPool;
-        info.MinImageCount = std::max(swapchain.minImageCount, 2u);
-        info.ImageCount = std::max(uint32_t(swapchain.images.size()), info.MinImageCount);
-        info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
-        info.CheckVkResultFn = [](VkResult result) {
-            if (result != VK_SUCCESS) throwVkError(result, "Dear ImGui's Vulkan backend", __FILE__, __LINE__);
-        };
-        ImGui_ImplVulkan_Init(&info, renderPass);
-        submitAndWait(context, [](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });
-        ImGui_ImplVulkan_DestroyFontUploadObjects();
-    }
-    ~ImGuiSession() {
-        ImGui_ImplVulkan_Shutdown();
-        ImGui_ImplGlfw_Shutdown();
-        ImGui::DestroyContext();
-        vkDestroyDescriptorPool(device, descriptorPool, nullptr);
-    }
-    VkDevice device;
-    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-};
 
 // The fields setShadingSettings() takes: when none changed (and neither did camera nor lights),
 // the last image is still right and the renderer need not run.
@@ -205,9 +95,11 @@ private:
     bool loadScene(const std::string& name);
     void buildRenderer();
     void recreateSwapchain();
+    void resizeRenderer();
     void drawFrame(bool drawUi, const std::string& screenshotPath);
     void writeScreenshot(const Buffer& pixels, const std::string& path);
     UiFacts facts() const;
+    void printFrameStats(const FrameStats& stats) const;
 
     ViewerOptions options_;
     GlfwSession glfw_;
@@ -232,6 +124,7 @@ private:
     VkExtent2D requestedExtent_{};
     bool swapchainStale_ = false;
     bool shownVsync_ = true;
+    float shownRenderScale_ = 1.0f;
     bool imageStale_ = true;   // the renderer must run this frame
     bool quit_ = false;
     uint64_t iteration_ = 0;
@@ -260,6 +153,10 @@ Viewer::Viewer(ViewerOptions options)
     state_.vsync = shownVsync_ = options_.vsync;
     state_.showGuide = options_.showGuide;
     state_.screenshotWithUi = options_.screenshotWithUi;
+    // Software rasterizers shade a quarter of the pixels unless told otherwise: a camera move at
+    // 960x540 costs seconds on lavapipe.
+    state_.renderScale = options_.renderScale > 0.0f ? options_.renderScale
+                                                     : (context_->isSoftwareRasterizer() ? 0.5f : 1.0f);
     recreateSwapchain();
     presentPass_ = std::make_unique<PresentPass>(*context_, swapchain_->format);
     presentPass_->createFramebuffers(*swapchain_);
@@ -297,10 +194,16 @@ void Viewer::recreateSwapchain() {
         presentPass_->createFramebuffers(*swapchain_);
     }
     if (imgui_) ImGui_ImplVulkan_SetMinImageCount(std::max(swapchain_->minImageCount, 2u));
-    state_.settings.width = swapchain_->extent.width;
-    state_.settings.height = swapchain_->extent.height;
+    resizeRenderer();
+}
+
+// The renderer draws at the window's size × the render scale; the present pass scales it up.
+void Viewer::resizeRenderer() {
+    shownRenderScale_ = state_.renderScale;
+    state_.settings.width = std::max(1u, uint32_t(std::lround(swapchain_->extent.width * state_.renderScale)));
+    state_.settings.height = std::max(1u, uint32_t(std::lround(swapchain_->extent.height * state_.renderScale)));
     if (renderer_) {
-        renderer_->resize(swapchain_->extent.width, swapchain_->extent.height);  // the voxels are kept
+        renderer_->resize(state_.settings.width, state_.settings.height);  // the voxels are kept
         imageStale_ = true;
     }
 }
@@ -320,8 +223,8 @@ bool Viewer::loadScene(const std::string& name) {
     try {
         loaded = vct::loadScene(name);
     } catch (const Error& error) {
-        state_.error = error.what();
-        std::fprintf(stderr, "vct view: %s (keeping %s)\n", error.what(), state_.sceneName.c_str());
+        state_.error = std::string(error.what()) + " (keeping " + state_.sceneName + ")";
+        std::fprintf(stderr, "vct view: %s\n", state_.error.c_str());
         return false;
     }
     if (loaded.cameras.empty()) loaded.cameras.push_back(defaultCamera(loaded.bounds()));
@@ -504,6 +407,7 @@ void Viewer::applyRequests() {
         imageStale_ = true;
     }
     if (state_.vsync != shownVsync_) swapchainStale_ = true;
+    if (state_.renderScale != shownRenderScale_) resizeRenderer();
 }
 
 UiFacts Viewer::facts() const {
@@ -512,6 +416,8 @@ UiFacts Viewer::facts() const {
     facts.presentMode = presentModeName(swapchain_->presentMode);
     facts.width = swapchain_->extent.width;
     facts.height = swapchain_->extent.height;
+    facts.renderWidth = renderer_->settings().width;
+    facts.renderHeight = renderer_->settings().height;
     facts.voxelResolution = renderer_->voxelGrid().resolution.x;
     facts.voxelMips = renderer_->voxelRadiance().desc.mipLevels;
     facts.deviceMemoryBytes = renderer_->deviceMemoryBytes();
@@ -613,6 +519,16 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     else if (!screenshotPath.empty()) state_.notice = "this window system cannot copy from its images";
 }
 
+// Scripted runs log which passes each frame ran, so a test can check what a change cost.
+void Viewer::printFrameStats(const FrameStats& stats) const {
+    std::printf("frame %llu: ran", static_cast<unsigned long long>(iteration_ - 1));
+    for (const PassTime& pass : stats.passes) std::printf(" %s", pass.name.c_str());
+    std::printf("; skipped");
+    for (const std::string& pass : stats.skipped) std::printf(" %s", pass.c_str());
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
 // One pass of the main loop; false when the viewer should stop.
 bool Viewer::loopIteration() {
     input_.beginFrame();
@@ -659,6 +575,7 @@ bool Viewer::loopIteration() {
         drawProfilerWindow(state_, uiFacts);
     }
     if (state_.showGuide) drawGuideWindow(state_);
+    drawErrorWindow(state_);
     ImGui::Render();
 
     if (imageStale_ || options_.renderEveryFrame || !sameCamera(renderer_->camera(), lastRenderedCamera_)) {
@@ -666,6 +583,7 @@ bool Viewer::loopIteration() {
         lastRenderedCamera_ = renderer_->camera();
         imageStale_ = false;
         state_.history.add(wallSeconds * 1000.0f, stats);
+        if (!options_.script.empty()) printFrameStats(stats);
     } else {
         FrameStats idle;
         idle.skipped = {"all"};

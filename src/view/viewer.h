@@ -27,6 +27,7 @@ struct ViewerOptions {
     uint32_t frames = 0;
     bool screenshotWithUi = false;
     std::vector<ScriptEvent> script;
+    float renderScale = 1.0f;       // image size / window size (0.5 = a quarter of the pixels)
     bool renderEveryFrame = false;  // redraw even when nothing changed (for measuring)
 };
 

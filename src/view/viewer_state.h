@@ -34,6 +34,7 @@ struct ViewerState {
     // supersampling, mip kind and bounces take a new Renderer (see needsNewRenderer).
     RenderSettings settings;
     float exposure = 1.0f;
+    float renderScale = 1.0f;               // renderer image size / window size
     SunControl sun;
     bool showGuide = true;
     bool showPanels = true;
