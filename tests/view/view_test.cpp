@@ -1,0 +1,193 @@
+// vct view under a virtual X server (xvfb-run) on whatever Vulkan device is present, with the
+// validation layer on: the viewer starts, follows scripted input (src/view/input.h), and the
+// screenshots it saves show what the input should have changed.
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Png {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+Png readPng(const fs::path& path) {
+    Png png;
+    int channels = 0;
+    unsigned char* pixels = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
+    if (!pixels) return png;
+    png.rgb.assign(pixels, pixels + size_t(png.width) * png.height * 3);
+    stbi_image_free(pixels);
+    return png;
+}
+
+double meanValue(const Png& png) {
+    double sum = 0.0;
+    for (unsigned char value : png.rgb) sum += value;
+    return png.rgb.empty() ? 0.0 : sum / double(png.rgb.size());
+}
+
+// Fraction of pixels whose colour differs by more than a few steps in any channel.
+double changedFraction(const Png& a, const Png& b) {
+    if (a.width != b.width || a.height != b.height || a.rgb.empty()) return 1.0;
+    size_t changed = 0;
+    for (size_t i = 0; i < a.rgb.size(); i += 3)
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > 4) {
+                ++changed;
+                break;
+            }
+    return double(changed) / double(a.rgb.size() / 3);
+}
+
+class View : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        directory = fs::temp_directory_path() / ("vct_view_test_" + std::string(test->name()));
+        fs::remove_all(directory);
+        fs::create_directories(directory);
+    }
+
+    // Runs `vct view` in `directory` on a small window with 64³ voxels; returns the exit code.
+    int runViewer(const std::string& arguments) {
+        const fs::path logPath = directory / "log.txt";
+        const std::string command = "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
+                                    " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE
+                                    " view --validate --no-guide --voxels 64 --shadow-map 512 "
+                                    "--width 320 --height 180 " +
+                                    arguments + " > '" + logPath.string() + "' 2>&1";
+        const int status = std::system(command.c_str());
+        std::ifstream logFile(logPath);
+        std::ostringstream text;
+        text << logFile.rdbuf();
+        log = text.str();
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    Png screenshot(const std::string& name) { return readPng(directory / name); }
+
+    fs::path directory;
+    std::string log;
+};
+
+// The panels cover much of a small window: the scripts hide them first (Tab), so the
+// camera and sun get the mouse, and screenshots show the image alone.
+constexpr const char* hidePanels = "0 key tab press; ";
+
+TEST_F(View, StartsRendersAndSavesAScreenshotOfTheWindowSize) {
+    ASSERT_EQ(runViewer("--screenshot shot.png --frames 3"), 0) << log;
+    const Png png = screenshot("shot.png");
+    ASSERT_FALSE(png.rgb.empty()) << log;
+    EXPECT_EQ(png.width, 320);
+    EXPECT_EQ(png.height, 180);
+    EXPECT_GT(meanValue(png), 20.0) << "the Cornell box should not be black";
+}
+
+TEST_F(View, ScreenshotWithTheUiShowsThePanels) {
+    ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot plain.png --frames 2"), 0) << log;
+    ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot ui.png --frames 2 --screenshot-ui"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("plain.png"), screenshot("ui.png")), 0.2);
+}
+
+TEST_F(View, FlyingAndLookingMoveTheCamera) {
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 2 key W down; 6 key W up; 6 mouse 160 90;"
+                               "7 button right down; 7 mouse 200 100; 8 button right up; 9 screenshot after.png; 10 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << log;
+}
+
+TEST_F(View, ResetKeyReturnsToTheSceneCamera) {
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot start.png; 2 key D down; 6 key D up; 7 screenshot moved.png;"
+                               "8 key R press; 9 screenshot reset.png; 10 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("start.png"), screenshot("moved.png")), 0.05);
+    EXPECT_LT(changedFraction(screenshot("start.png"), screenshot("reset.png")), 0.001);
+}
+
+TEST_F(View, OrbitModeDragTurnsAroundTheScene) {
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 2 key O press; 3 mouse 100 90; 4 button left down;"
+                               "5 mouse 180 90; 6 button left up; 7 scroll 2; 8 screenshot after.png; 9 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05);
+}
+
+TEST_F(View, MovingTheSunReinjectsLightWithoutRevoxelizing) {
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 2 key left down; 8 key left up; 8 key up down; 12 key up up;"
+                               "13 screenshot after.png; 14 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.01);
+    // Frame 0 builds everything; a frame that moved the sun re-injects but keeps the voxels.
+    EXPECT_NE(log.find("frame 0: ran shadow voxelize inject"), std::string::npos) << log;
+    EXPECT_NE(log.find("frame 5: ran shadow inject mips gbuffer shade resolve; skipped voxelize\n"), std::string::npos)
+        << log;
+}
+
+TEST_F(View, CtrlDragMovesTheSun) {
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 1 mouse 100 90; 2 key ctrl down; 2 button left down;"
+                               "3 mouse 160 60; 4 button left up; 4 key ctrl up; 5 screenshot after.png; 6 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.01);
+}
+
+TEST_F(View, ComponentKeysChangeTheImage) {
+    // 1 = direct diffuse off: the box is lit only by indirect light and so is darker.
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot lit.png; 2 key 1 press; 3 screenshot no_direct.png; 4 key 1 press;"
+                               "4 key V press; 5 screenshot base_colour.png; 6 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_LT(meanValue(screenshot("no_direct.png")), meanValue(screenshot("lit.png")) - 5.0);
+    EXPECT_GT(changedFraction(screenshot("lit.png"), screenshot("base_colour.png")), 0.05);
+}
+
+TEST_F(View, ResizingAndMinimisingDoNotCrash) {
+    const std::string events = std::string(hidePanels) +
+                               "1 resize 400 240; 4 iconify; 8 restore; 12 resize 200 120; 16 screenshot small.png;"
+                               "17 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    const Png png = screenshot("small.png");
+    EXPECT_EQ(png.width, 200) << log;
+    EXPECT_EQ(png.height, 120);
+    EXPECT_GT(meanValue(png), 20.0);
+}
+
+TEST_F(View, ABrokenDroppedFileKeepsTheSceneAndADroppedSceneLoads) {
+    std::ofstream(directory / "broken.gltf") << "{ not json";
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 2 drop broken.gltf; 3 screenshot kept.png;"
+                               "4 drop cornell-emissive; 5 screenshot emissive.png; 6 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_NE(log.find("keeping cornell"), std::string::npos) << log;
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("kept.png")), 0.001);
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("emissive.png")), 0.05);
+}
+
+TEST_F(View, ScreenshotKeyWritesAPngInTheCurrentFolder) {
+    ASSERT_EQ(runViewer("--events '1 key F12 press; 2 quit'"), 0) << log;
+    bool found = false;
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory))
+        found |= entry.path().extension() == ".png" && readPng(entry.path()).width == 320;
+    EXPECT_TRUE(found) << log;
+}
+
+TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
+    EXPECT_EQ(runViewer("--events '1 jump'"), 1);
+    EXPECT_NE(log.find("unknown action 'jump'"), std::string::npos) << log;
+}
+
+}  // namespace
