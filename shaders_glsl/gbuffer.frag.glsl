@@ -28,7 +28,12 @@ void main() {
     // Surfaces reflect on both sides (as in the reference path tracer); emission leaves the front only.
     vec3 normal = worldNormal;
     float lengthSquared = dot(normal, normal);
-    normal = lengthSquared > 1e-20f ? normal * inversesqrt(lengthSquared) : vec3(0.0f, 1.0f, 0.0f);
+    if (!(lengthSquared > 1e-20f)) {
+        // A zero-length vertex normal (or normals that cancel): the triangle's own plane.
+        normal = cross(dFdx(worldPosition), dFdy(worldPosition));
+        lengthSquared = dot(normal, normal);
+    }
+    normal = lengthSquared > 0.0f ? normal * inversesqrt(lengthSquared) : vec3(0.0f, 1.0f, 0.0f);
     vec3 toCamera = frame.cameraPosition.xyz - worldPosition;
     bool frontFace = dot(normal, toCamera) >= 0.0f;
     if (!frontFace) normal = -normal;

@@ -59,13 +59,20 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
 
 void Renderer::setGeometry(const Scene& scene) {
     if (sceneGpu_) vkDeviceWaitIdle(context_.device);
-    sceneBounds_ = scene.bounds();
+    checkSceneCanBeRendered(scene);
+    // The GPU works in a frame centred on the scene: far from the origin a float's step is too
+    // coarse for view and shadow matrices built from world positions (at +1e4 m it is 1 mm, and
+    // shadows there changed 9 % of the Cornell box's pixels). Centring is exact (Sterbenz).
+    sceneOrigin_ = scene.bounds().center();
+    Scene local = scene;
+    for (Vertex& vertex : local.vertices) vertex.position -= sceneOrigin_;
+    sceneBounds_ = local.bounds();
     grid_ = fitVoxelGrid(sceneBounds_, settings_.voxelResolution);
     brightestEmission_ = 0.0f;
     for (const Material& material : scene.materials)
         brightestEmission_ = std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
-    sceneGpu_ = std::make_unique<SceneGpu>(context_, scene);
-    voxelizePass_ = std::make_unique<VoxelizePass>(context_, scene, *sceneGpu_, grid_);
+    sceneGpu_ = std::make_unique<SceneGpu>(context_, local);
+    voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
     resize(settings_.width, settings_.height);  // the G-buffer pipeline depends on the scene's textures
     voxelsDirty_ = true;
     if (shadowPass_) setLights(lights_);  // shadow views are fitted to the scene's bounds
@@ -82,9 +89,12 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
+    checkLightsCanBeRendered(lights);
     lights_ = lights;
+    std::vector<Light> local = lights;
+    for (Light& light : local) light.position -= sceneOrigin_;
     const ShadowLayout previous = shadowLayout_;
-    shadowLayout_ = layoutShadows(lights_, sceneBounds_, settings_);
+    shadowLayout_ = layoutShadows(local, sceneBounds_, settings_);
     lightsBuffer_ = hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     shadowViewsBuffer_ =
         hostArray<glsl::ShadowView>(context_, shadowLayout_.views.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -132,9 +142,11 @@ void Renderer::setShadingSettings(const RenderSettings& settings) {
 void Renderer::writeFrameConstants() {
     const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
     glsl::FrameConstants constants{};
-    constants.viewProjection = cameraMatrices(camera_, float(width) / float(height), sceneBounds_).viewProjection;
+    Camera local = camera_;
+    local.position -= sceneOrigin_;
+    constants.viewProjection = cameraMatrices(local, float(width) / float(height), sceneBounds_).viewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
-    constants.cameraPosition = glm::vec4(camera_.position, 1.0f);
+    constants.cameraPosition = glm::vec4(local.position, 1.0f);
     constants.counts = glm::uvec4(uint32_t(shadowLayout_.lights.size()), uint32_t(shadowLayout_.views.size()),
                                   componentFlags(settings_), settings_.anisotropicVoxels ? 1u : 0u);
     constants.shading = glm::vec4(settings_.ambientFactor, settings_.shadowNormalOffset, settings_.pcfRadius, 0.0f);

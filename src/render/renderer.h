@@ -63,7 +63,10 @@ public:
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
 
-    const glsl::VoxelGridParams& voxelGrid() const { return grid_; }
+    // The GPU's positions (G-buffer, voxel grid, shadow views) are relative to this point, the
+    // centre of the scene's bounds: world = local + sceneOrigin().
+    glm::vec3 sceneOrigin() const { return sceneOrigin_; }
+    const glsl::VoxelGridParams& voxelGrid() const { return grid_; }  // in the local frame
     const VoxelizePass& voxels() const { return *voxelizePass_; }
     const GpuImage& voxelRadiance() const { return injectPass_.radiance; }
     // The last frame's resolved image (RGBA32F, width × height, GENERAL layout), e.g. for a viewer
@@ -77,7 +80,8 @@ private:
 
     GpuContext& context_;
     RenderSettings settings_;
-    Bounds sceneBounds_;
+    glm::vec3 sceneOrigin_{0.0f};
+    Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
     Camera camera_;
     std::vector<Light> lights_;
     bool shadowsDirty_ = true;

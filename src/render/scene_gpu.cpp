@@ -1,10 +1,13 @@
 #include "render/scene_gpu.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <cstring>
 #include <numeric>
 
 #include "gpu/commands.h"
+#include "error.h"
 #include "gpu/vk_check.h"
 #include "gpu_types.h"
 
@@ -47,7 +50,51 @@ GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, con
     return image;
 }
 
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
 }  // namespace
+
+void checkSceneCanBeRendered(const Scene& scene) {
+    const auto fail = [&](const std::string& problem) { throw Error("scene '" + scene.name + "': " + problem); };
+    for (size_t i = 0; i < scene.vertices.size(); ++i) {
+        const Vertex& vertex = scene.vertices[i];
+        if (!finite(vertex.position) || !finite(vertex.normal) || !std::isfinite(vertex.u) || !std::isfinite(vertex.v))
+            fail("vertex " + std::to_string(i) + " holds a value that is not a finite number");
+    }
+    if (scene.indices.size() % 3 != 0) fail("the index count is not a multiple of 3");
+    for (size_t i = 0; i < scene.indices.size(); ++i)
+        if (scene.indices[i] >= scene.vertices.size())
+            fail("index " + std::to_string(i) + " names vertex " + std::to_string(scene.indices[i]) + " of " +
+                 std::to_string(scene.vertices.size()));
+    if (scene.triangleMaterials.size() != scene.triangleCount())
+        fail("there are " + std::to_string(scene.triangleMaterials.size()) + " triangle materials for " +
+             std::to_string(scene.triangleCount()) + " triangles");
+    for (size_t i = 0; i < scene.triangleMaterials.size(); ++i)
+        if (scene.triangleMaterials[i] >= scene.materials.size())
+            fail("triangle " + std::to_string(i) + " names material " + std::to_string(scene.triangleMaterials[i]) +
+                 ", which does not exist");
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& material = scene.materials[i];
+        const glm::vec4 color = material.baseColorFactor;
+        if (!finite(glm::vec3(color)) || !std::isfinite(color.a) || !finite(material.emission) ||
+            !std::isfinite(material.metallic) || !std::isfinite(material.roughness) ||
+            !std::isfinite(material.specularWeight))
+            fail("material " + std::to_string(i) + " ('" + material.name + "') holds a value that is not a finite number");
+    }
+}
+
+void checkLightsCanBeRendered(const std::vector<Light>& lights) {
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const Light& light = lights[i];
+        const std::string name = "light " + std::to_string(i) + " ('" + light.name + "')";
+        if (!finite(light.color) || !std::isfinite(light.intensity) || !finite(light.position) ||
+            !finite(light.direction) || !std::isfinite(light.range) || !std::isfinite(light.innerConeAngle) ||
+            !std::isfinite(light.outerConeAngle))
+            throw Error(name + " holds a value that is not a finite number");
+        if (light.intensity < 0.0f || light.color.r < 0.0f || light.color.g < 0.0f || light.color.b < 0.0f)
+            throw Error(name + " has a negative intensity or colour");
+    }
+}
 
 SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) {
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;

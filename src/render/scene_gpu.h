@@ -9,6 +9,14 @@
 
 namespace vct {
 
+// Scenes built in code skip the glTF validator, so the renderer checks what would otherwise reach
+// the GPU as NaN or an out-of-range index: every vertex attribute, material factor and light value
+// must be finite, light intensities and colours not negative, indices and material numbers in
+// range. Throws vct::Error naming the scene (or light) and the element. Zero-length normals are
+// allowed: the G-buffer falls back to the triangle's plane.
+void checkSceneCanBeRendered(const Scene& scene);
+void checkLightsCanBeRendered(const std::vector<Light>& lights);
+
 struct SceneGpu {
     SceneGpu(GpuContext& context, const Scene& scene);
     ~SceneGpu();
