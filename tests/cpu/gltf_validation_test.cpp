@@ -171,6 +171,37 @@ TEST(GltfValidation, InfinitePositionIsRefused) {
     expectRefused(gltf, "element 0 holds inf, not a finite number");
 }
 
+TEST(GltfValidation, NanNormalAndInfiniteTexcoordAreRefused) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float infinity = std::numeric_limits<float>::infinity();
+    {
+        GltfBuilder gltf;
+        const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        const int normals = gltf.addVec3({{0, 0, 1}, {nan, 0, 1}, {0, 0, 1}});
+        gltf.setScene({gltf.addNode({{"mesh", gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}})}})});
+        expectRefused(gltf, "attributes.NORMAL: element 1 holds nan");
+    }
+    GltfBuilder gltf;
+    const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int uvs = gltf.addVec2({{0, 0}, {1, 0}, {0, -infinity}});
+    gltf.setScene({gltf.addNode({{"mesh", gltf.addMesh({{"POSITION", positions}, {"TEXCOORD_0", uvs}})}})});
+    expectRefused(gltf, "attributes.TEXCOORD_0: element 2 holds -inf");
+}
+
+TEST(GltfValidation, ZeroLengthNormalsLoadAsTheyAre) {
+    // Not an error: the renderer's G-buffer falls back to the triangle's plane (tests/gpu/stress_test.cpp).
+    GltfBuilder gltf;
+    const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int normals = gltf.addVec3({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}});
+    gltf.setScene({gltf.addNode({{"mesh", gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}})}})});
+    test::TempFolder folder;
+    const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
+    ASSERT_EQ(scene.vertices.size(), 3u);
+    for (const Vertex& vertex : scene.vertices) {
+        EXPECT_TRUE(std::isfinite(vertex.normal.x) && std::isfinite(vertex.normal.y) && std::isfinite(vertex.normal.z));
+    }
+}
+
 TEST(GltfValidation, MalformedNodeTransformIsRefused) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["nodes"][0]["matrix"] = {1, 0, 0, 1};

@@ -1,0 +1,143 @@
+#include "bench/failure_modes.h"
+
+#include <array>
+#include <cmath>
+
+#include "render/renderer.h"
+
+namespace vct::bench {
+
+double meanLuminance(const Image& image) {
+    double sum = 0.0;
+    const size_t pixels = size_t(image.width) * image.height;
+    for (size_t i = 0; i < pixels; ++i)
+        sum += 0.2126 * image.rgb[i * 3] + 0.7152 * image.rgb[i * 3 + 1] + 0.0722 * image.rgb[i * 3 + 2];
+    return pixels > 0 ? sum / double(pixels) : 0.0;
+}
+
+bool allFiniteAndNonNegative(const Image& image) {
+    for (float value : image.rgb)
+        if (!std::isfinite(value) || value < 0.0f) return false;
+    return true;
+}
+
+double relativeL1Difference(const Image& a, const Image& b) {
+    double difference = 0.0, total = 0.0;
+    for (size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i) {
+        difference += std::abs(double(a.rgb[i]) - double(b.rgb[i]));
+        total += std::abs(double(a.rgb[i]));
+    }
+    return total > 0.0 ? difference / total : (difference > 0.0 ? 1.0 : 0.0);
+}
+
+namespace {
+
+// A one-sided quad as two triangles, corners in order around it; `normal` is its shading normal.
+void addQuad(Scene& scene, const std::array<glm::vec3, 4>& corners, glm::vec3 normal, uint32_t material) {
+    const uint32_t first = uint32_t(scene.vertices.size());
+    for (const glm::vec3& corner : corners) scene.vertices.push_back({corner, 0.0f, normal, 0.0f});
+    for (uint32_t index : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + index);
+    scene.triangleMaterials.push_back(material);
+    scene.triangleMaterials.push_back(material);
+}
+
+Camera roomCamera(glm::vec3 position, glm::vec3 forward) {
+    Camera camera;
+    camera.position = position;
+    camera.forward = forward;
+    camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.yfov = 1.3f;
+    camera.znear = 0.01f;
+    return camera;
+}
+
+}  // namespace
+
+Scene makeTwoRoomScene(float wallX) {
+    Scene scene;
+    scene.name = "two rooms";
+    Material white;
+    white.name = "white";
+    white.baseColorFactor = glm::vec4(0.7f, 0.7f, 0.7f, 1.0f);
+    white.metallic = 0.0f;
+    white.roughness = 1.0f;
+    white.specularWeight = 0.0f;  // Lambertian: no specular cone, the leak is all diffuse
+    scene.materials.push_back(white);
+
+    // The outer shell spans x −1…1, y 0…1, z 0…1 whatever wallX is, so the voxel grid is fixed and
+    // wallX alone says where the wall falls inside its voxels.
+    addQuad(scene, {{{-1, 0, 0}, {1, 0, 0}, {1, 0, 1}, {-1, 0, 1}}}, {0, 1, 0}, 0);  // floor
+    addQuad(scene, {{{-1, 1, 0}, {1, 1, 0}, {1, 1, 1}, {-1, 1, 1}}}, {0, -1, 0}, 0);  // ceiling
+    addQuad(scene, {{{-1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 1, 0}}}, {0, 0, 1}, 0);   // back
+    addQuad(scene, {{{-1, 0, 1}, {1, 0, 1}, {1, 1, 1}, {-1, 1, 1}}}, {0, 0, -1}, 0);  // front
+    addQuad(scene, {{{-1, 0, 0}, {-1, 1, 0}, {-1, 1, 1}, {-1, 0, 1}}}, {1, 0, 0}, 0);  // lit room's end
+    addQuad(scene, {{{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}}, {-1, 0, 0}, 0);    // dark room's end
+    // The shared wall: one quad of zero thickness, reflecting on both sides like every surface.
+    addQuad(scene, {{{wallX, 0, 0}, {wallX, 1, 0}, {wallX, 1, 1}, {wallX, 0, 1}}}, {-1, 0, 0}, 0);
+
+    Light light;
+    light.name = "lit room's light";
+    light.type = LightType::Point;
+    light.intensity = 1.0f;
+    light.position = glm::vec3(-0.5f, 0.6f, 0.5f);
+    scene.lights.push_back(light);
+    scene.cameras.push_back(darkRoomCamera());
+    return scene;
+}
+
+Camera litRoomCamera() { return roomCamera({-0.97f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.0f}); }
+Camera darkRoomCamera() { return roomCamera({0.97f, 0.5f, 0.5f}, {-1.0f, 0.0f, 0.0f}); }
+
+LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX) {
+    Renderer renderer(context, makeTwoRoomScene(wallX), settings);
+    LeakMeasurement leak;
+    renderer.setCamera(litRoomCamera());
+    renderer.renderFrame();
+    leak.litRoomLuminance = meanLuminance(renderer.readImage());
+    renderer.setCamera(darkRoomCamera());
+    renderer.renderFrame();
+    leak.darkRoomLuminance = meanLuminance(renderer.readImage());
+    return leak;
+}
+
+std::vector<ResolutionLuminance> measureResolutionDrift(GpuContext& context, const Scene& scene,
+                                                        RenderSettings settings,
+                                                        const std::vector<uint32_t>& resolutions) {
+    std::vector<ResolutionLuminance> results;
+    for (uint32_t resolution : resolutions) {
+        settings.voxelResolution = resolution;
+        Renderer renderer(context, scene, settings);
+        renderer.renderFrame();
+        const Image image = renderer.readImage();
+        results.push_back({resolution, meanLuminance(image), allFiniteAndNonNegative(image)});
+    }
+    return results;
+}
+
+FlickerMeasurement measureFlicker(GpuContext& context, const Scene& scene, const RenderSettings& settings,
+                                  float cameraStep, float lightStep) {
+    Renderer renderer(context, scene, settings);
+    const Camera start = renderer.camera();
+    const std::vector<Light> lights = renderer.lights();
+    renderer.renderFrame();
+    const Image before = renderer.readImage();
+
+    FlickerMeasurement flicker;
+    Camera moved = start;
+    moved.position.x += cameraStep;
+    renderer.setCamera(moved);
+    renderer.renderFrame();
+    flicker.cameraChange = relativeL1Difference(before, renderer.readImage());
+    renderer.setCamera(start);
+
+    if (!lights.empty()) {
+        std::vector<Light> movedLights = lights;
+        movedLights[0].position.x += lightStep;
+        renderer.setLights(movedLights);
+        renderer.renderFrame();
+        flicker.lightChange = relativeL1Difference(before, renderer.readImage());
+    }
+    return flicker;
+}
+
+}  // namespace vct::bench

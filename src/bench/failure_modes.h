@@ -1,0 +1,62 @@
+// The failures users of other voxel-cone-tracing renderers report most, as measurements that the
+// tests guard and `vct bench` can report: light leaking through thin walls, brightness that drifts
+// with the voxel resolution, and flicker when the camera or a light moves a little.
+//
+// Each function renders with the caller's settings (image size, cones, mips...), so a benchmark
+// can run them over its matrix; the tests use small images on lavapipe.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gpu/context.h"
+#include "io/image_io.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+
+namespace vct::bench {
+
+// Rec. 709 luminance averaged over the image.
+double meanLuminance(const Image& image);
+// True when every value is finite and not negative.
+bool allFiniteAndNonNegative(const Image& image);
+// Σ|a − b| / Σ|a| over all channels: how much of the image changed (0 = identical). Same sizes.
+double relativeL1Difference(const Image& a, const Image& b);
+
+// ---- Light leaking: two 1 m rooms side by side along x share a wall of zero thickness (thinner
+// than any voxel) at x = wallX. A point light hangs in the lit room (x < wallX); the dark room
+// receives no light at all, so its ground truth is exactly 0.
+Scene makeTwoRoomScene(float wallX);
+// Cameras inside each room, looking at the shared wall.
+Camera litRoomCamera();
+Camera darkRoomCamera();
+
+struct LeakMeasurement {
+    double litRoomLuminance = 0.0;   // mean luminance the lit room's camera sees (full light)
+    double darkRoomLuminance = 0.0;  // the same in the dark room: the leak (ground truth 0)
+    // darkRoomLuminance / litRoomLuminance: the leaked share of the light on the other side.
+    double leakRatio() const { return litRoomLuminance > 0.0 ? darkRoomLuminance / litRoomLuminance : 0.0; }
+};
+LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX);
+
+// ---- Brightness against voxel resolution: the mean luminance of `settings.mode` (e.g. indirect)
+// for each resolution, all else equal.
+struct ResolutionLuminance {
+    uint32_t voxelResolution = 0;
+    double meanLuminance = 0.0;
+    bool finite = false;
+};
+std::vector<ResolutionLuminance> measureResolutionDrift(GpuContext& context, const Scene& scene,
+                                                        RenderSettings settings,
+                                                        const std::vector<uint32_t>& resolutions);
+
+// ---- Flicker: the relative L1 change of the image when the camera or the first light moves by a
+// small step (metres, along x), against the image before. A step of zero must change nothing.
+struct FlickerMeasurement {
+    double cameraChange = 0.0;  // relativeL1Difference after moving the camera by cameraStep
+    double lightChange = 0.0;   // the same after moving the first light by lightStep
+};
+FlickerMeasurement measureFlicker(GpuContext& context, const Scene& scene, const RenderSettings& settings,
+                                  float cameraStep, float lightStep);
+
+}  // namespace vct::bench
