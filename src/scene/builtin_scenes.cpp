@@ -6,8 +6,14 @@
 // (as in the PBRT-v3 and Mitsuba scenes): white 0.725 0.71 0.68, red 0.63 0.065 0.05,
 // green 0.14 0.45 0.091. Surfaces are pure Lambertian (KHR_materials_specular weight 0),
 // as the measured data describes diffuse reflectance.
+//
+// Beside it, the scenes `vct bench` measures (see README, "Benchmark"): `sun-room` (a closed room
+// lit by the sun through a hole in its roof, so most of what the camera sees is indirect light),
+// `cornell-metal` (a glossy gold sphere for the specular cone), and `terrain` (a procedural
+// height field with spheres, about 60 000 triangles, for timing).
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "error.h"
 #include "scene/load.h"
@@ -20,6 +26,7 @@ constexpr float kMillimetre = 0.001f;
 
 struct SceneBuilder {
     Scene scene;
+    float unit = kMillimetre;  // the unit of addQuad's and addBlock's coordinates, in metres
 
     uint32_t addMaterial(const std::string& name, glm::vec3 reflectance, glm::vec3 emission = glm::vec3(0.0f)) {
         Material material;
@@ -36,8 +43,8 @@ struct SceneBuilder {
     // Adds a planar quad (corners in millimetres, in order around the quad) as two triangles
     // whose normal points towards `facing`, so the winding of the published data does not matter.
     void addQuad(Quad corners, glm::vec3 facing, uint32_t material) {
-        for (glm::vec3& corner : corners) corner *= kMillimetre;
-        facing *= kMillimetre;
+        for (glm::vec3& corner : corners) corner *= unit;
+        facing *= unit;
         glm::vec3 normal = glm::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
         const glm::vec3 center = 0.25f * (corners[0] + corners[1] + corners[2] + corners[3]);
         if (glm::dot(normal, facing - center) < 0.0f) {
@@ -49,6 +56,46 @@ struct SceneBuilder {
         for (uint32_t index : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + index);
         scene.triangleMaterials.push_back(material);
         scene.triangleMaterials.push_back(material);
+    }
+
+    // An axis-aligned box (metres) whose faces point outwards.
+    void addBox(glm::vec3 lo, glm::vec3 hi, uint32_t material) {
+        const glm::vec3 c = 0.5f * (lo + hi);
+        const glm::vec3 far = 2.0f * hi - lo;  // a point beyond each +face
+        const glm::vec3 near = 2.0f * lo - hi;  // ... and each −face
+        addQuad({{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}}}, {c.x, near.y, c.z}, material);
+        addQuad({{{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}}, {c.x, far.y, c.z}, material);
+        addQuad({{{lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {lo.x, lo.y, hi.z}}}, {near.x, c.y, c.z}, material);
+        addQuad({{{hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z}}}, {far.x, c.y, c.z}, material);
+        addQuad({{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}}}, {c.x, c.y, near.z}, material);
+        addQuad({{{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}}, {c.x, c.y, far.z}, material);
+    }
+
+    // A triangle (metres) with per-vertex normals, wound counter-clockwise around them.
+    void addTriangle(const std::array<Vertex, 3>& corners, uint32_t material) {
+        const uint32_t first = uint32_t(scene.vertices.size());
+        for (const Vertex& corner : corners) scene.vertices.push_back(corner);
+        for (uint32_t index : {0u, 1u, 2u}) scene.indices.push_back(first + index);
+        scene.triangleMaterials.push_back(material);
+    }
+
+    // A UV sphere (metres) with smooth normals: `segments` around, `segments / 2` from pole to pole.
+    void addSphere(glm::vec3 center, float radius, uint32_t segments, uint32_t material) {
+        const uint32_t rings = segments / 2;
+        const auto point = [&](uint32_t ring, uint32_t segment) {
+            const float theta = float(M_PI) * float(ring) / float(rings);
+            const float phi = 2.0f * float(M_PI) * float(segment) / float(segments);
+            const glm::vec3 normal(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            return Vertex{center + radius * normal, 0.0f, normal, 0.0f};
+        };
+        for (uint32_t ring = 0; ring < rings; ++ring) {
+            for (uint32_t segment = 0; segment < segments; ++segment) {
+                const Vertex a = point(ring, segment), b = point(ring, segment + 1);
+                const Vertex c = point(ring + 1, segment), d = point(ring + 1, segment + 1);
+                if (ring > 0) addTriangle({a, b, c}, material);              // the poles need one triangle
+                if (ring + 1 < rings) addTriangle({b, d, c}, material);
+            }
+        }
     }
 
     // A block given by its top face (published order) standing on the floor; sides face away from its axis.
@@ -64,11 +111,25 @@ struct SceneBuilder {
     }
 };
 
-enum class CornellLight { PointUnderCeiling, EmissiveCeilingPatch };
+Camera cameraLookingAt(const std::string& name, glm::vec3 position, glm::vec3 target, float yfovDegrees) {
+    Camera camera;
+    camera.name = name;
+    camera.position = position;
+    camera.forward = glm::normalize(target - position);
+    const glm::vec3 right = glm::normalize(glm::cross(camera.forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+    camera.up = glm::cross(right, camera.forward);
+    camera.yfov = glm::radians(yfovDegrees);
+    camera.znear = 0.01f;
+    return camera;
+}
+
+enum class CornellLight { PointUnderCeiling, EmissiveCeilingPatch, PointWithMetalSphere };
 
 Scene makeCornellBox(CornellLight lightKind) {
     SceneBuilder builder;
-    builder.scene.name = lightKind == CornellLight::PointUnderCeiling ? "cornell" : "cornell-emissive";
+    builder.scene.name = lightKind == CornellLight::PointUnderCeiling      ? "cornell"
+                         : lightKind == CornellLight::EmissiveCeilingPatch ? "cornell-emissive"
+                                                                           : "cornell-metal";
     const uint32_t white = builder.addMaterial("white", {0.725f, 0.71f, 0.68f});
     const uint32_t red = builder.addMaterial("red", {0.63f, 0.065f, 0.05f});
     const uint32_t green = builder.addMaterial("green", {0.14f, 0.45f, 0.091f});
@@ -83,11 +144,22 @@ Scene makeCornellBox(CornellLight lightKind) {
     builder.addQuad({{{552.8f, 0, 0}, {549.6f, 0, 559.2f}, {556, 548.8f, 559.2f}, {556, 548.8f, 0}}}, inside,
                     red);  // left wall
     builder.addBlock({{{130, 165, 65}, {82, 165, 225}, {240, 165, 272}, {290, 165, 114}}}, white);   // short
-    builder.addBlock({{{423, 330, 247}, {265, 330, 296}, {314, 330, 456}, {472, 330, 406}}}, white);  // tall
+    if (lightKind != CornellLight::PointWithMetalSphere) {
+        builder.addBlock({{{423, 330, 247}, {265, 330, 296}, {314, 330, 456}, {472, 330, 406}}}, white);  // tall
+    } else {
+        // Where the tall block stood: a glossy gold sphere, so the specular cone has something to
+        // reflect. Base colour = gold's linear F0 as listed in the Unreal Engine documentation,
+        // "Physically Based Materials" (1.000, 0.766, 0.336); roughness 0.25 is a polished metal.
+        const uint32_t gold = builder.addMaterial("gold", {1.0f, 0.766f, 0.336f});
+        builder.scene.materials[gold].metallic = 1.0f;
+        builder.scene.materials[gold].roughness = 0.25f;
+        builder.scene.materials[gold].specularWeight = 1.0f;
+        builder.addSphere(glm::vec3(0.3685f, 0.15f, 0.3513f), 0.15f, 48, gold);
+    }
 
     // The published light patch spans x 213–343, z 227–332 at y 548.8.
     const glm::vec3 patchCenter = glm::vec3(278.0f, 548.8f, 279.5f) * kMillimetre;
-    if (lightKind == CornellLight::PointUnderCeiling) {
+    if (lightKind != CornellLight::EmissiveCeilingPatch) {
         Light light;
         light.name = "ceiling point light";
         light.type = LightType::Point;
@@ -117,13 +189,99 @@ Scene makeCornellBox(CornellLight lightKind) {
     return builder.scene;
 }
 
+// A closed 4 × 3 × 4 m room with a 1 × 1 m hole in its roof. The sun shines through the hole onto
+// one patch of the floor; everything else the camera sees is lit only by light bounced off that
+// patch. The room's walls are quads of zero thickness: what the sun-lit roof leaks into the voxels
+// inside is exactly the error the benchmark should see.
+Scene makeSunRoom() {
+    SceneBuilder builder;
+    builder.scene.name = "sun-room";
+    builder.unit = 1.0f;
+    const uint32_t white = builder.addMaterial("white", {0.725f, 0.71f, 0.68f});
+    const uint32_t red = builder.addMaterial("red", {0.63f, 0.065f, 0.05f});
+    const uint32_t green = builder.addMaterial("green", {0.14f, 0.45f, 0.091f});
+    const glm::vec3 inside(2.0f, 1.5f, 2.0f);
+    builder.addQuad({{{0, 0, 0}, {4, 0, 0}, {4, 0, 4}, {0, 0, 4}}}, inside, white);  // floor
+    builder.addQuad({{{0, 0, 0}, {0, 3, 0}, {0, 3, 4}, {0, 0, 4}}}, inside, red);    // x = 0
+    builder.addQuad({{{4, 0, 0}, {4, 3, 0}, {4, 3, 4}, {4, 0, 4}}}, inside, green);  // x = 4
+    builder.addQuad({{{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {0, 3, 0}}}, inside, white);  // behind the camera
+    builder.addQuad({{{0, 0, 4}, {4, 0, 4}, {4, 3, 4}, {0, 3, 4}}}, inside, white);  // back wall
+    // The roof around the hole x 1.5–2.5, z 1.5–2.5.
+    builder.addQuad({{{0, 3, 0}, {4, 3, 0}, {4, 3, 1.5f}, {0, 3, 1.5f}}}, inside, white);
+    builder.addQuad({{{0, 3, 2.5f}, {4, 3, 2.5f}, {4, 3, 4}, {0, 3, 4}}}, inside, white);
+    builder.addQuad({{{0, 3, 1.5f}, {1.5f, 3, 1.5f}, {1.5f, 3, 2.5f}, {0, 3, 2.5f}}}, inside, white);
+    builder.addQuad({{{2.5f, 3, 1.5f}, {4, 3, 1.5f}, {4, 3, 2.5f}, {2.5f, 3, 2.5f}}}, inside, white);
+    builder.addBox({0.6f, 0.0f, 2.6f}, {1.4f, 1.0f, 3.4f}, white);
+
+    // 20 lux travelling down and towards +x, +z: the lit patch lies on the floor around x 3, z 2.7.
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 20.0f;
+    sun.direction = glm::normalize(glm::vec3(0.35f, -1.0f, 0.25f));
+    builder.scene.lights.push_back(sun);
+    builder.scene.cameras.push_back(cameraLookingAt("sun-room camera", {2.0f, 1.6f, 0.2f}, {2.0f, 0.9f, 4.0f}, 70.0f));
+    return builder.scene;
+}
+
+// A 20 × 20 m height field of 160 × 160 cells (sums of sines, so it needs no random numbers or
+// data files) with a 4 × 4 grid of spheres on it, under a low sun: about 60 000 triangles.
+Scene makeTerrain() {
+    SceneBuilder builder;
+    builder.scene.name = "terrain";
+    const uint32_t ground = builder.addMaterial("ground", {0.35f, 0.32f, 0.28f});
+    const std::array<uint32_t, 3> sphereMaterials = {builder.addMaterial("white", {0.725f, 0.71f, 0.68f}),
+                                                     builder.addMaterial("red", {0.63f, 0.065f, 0.05f}),
+                                                     builder.addMaterial("green", {0.14f, 0.45f, 0.091f})};
+    const auto height = [](float x, float z) {
+        return 0.8f * std::sin(0.35f * x) * std::cos(0.3f * z) + 0.4f * std::sin(0.9f * x + 0.7f * z) +
+               0.15f * std::cos(2.1f * x - 1.3f * z);
+    };
+    const auto vertex = [&](float x, float z) {
+        const float h = 0.01f;  // central differences: the normal of the height field
+        const glm::vec3 normal = glm::normalize(
+            glm::vec3(height(x - h, z) - height(x + h, z), 2.0f * h, height(x, z - h) - height(x, z + h)));
+        return Vertex{{x, height(x, z), z}, 0.0f, normal, 0.0f};
+    };
+    constexpr uint32_t kCells = 160;
+    constexpr float kSide = 20.0f, kCell = kSide / kCells;
+    for (uint32_t i = 0; i < kCells; ++i) {
+        for (uint32_t j = 0; j < kCells; ++j) {
+            const float x0 = -0.5f * kSide + i * kCell, z0 = -0.5f * kSide + j * kCell;
+            const Vertex a = vertex(x0, z0), b = vertex(x0 + kCell, z0);
+            const Vertex c = vertex(x0, z0 + kCell), d = vertex(x0 + kCell, z0 + kCell);
+            builder.addTriangle({a, c, b}, ground);  // counter-clockwise seen from above
+            builder.addTriangle({b, c, d}, ground);
+        }
+    }
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            const float x = -6.0f + 4.0f * i, z = -6.0f + 4.0f * j;
+            builder.addSphere({x, height(x, z) + 0.6f, z}, 0.7f, 32, sphereMaterials[(i + j) % 3]);
+        }
+    }
+    Light sun;
+    sun.name = "low sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 5.0f;
+    sun.direction = glm::normalize(glm::vec3(-0.6f, -0.45f, 0.35f));
+    builder.scene.lights.push_back(sun);
+    builder.scene.cameras.push_back(cameraLookingAt("terrain camera", {-11.0f, 6.0f, -11.0f}, {0.0f, -0.5f, 0.0f}, 45.0f));
+    return builder.scene;
+}
+
 }  // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"cornell", "cornell-emissive"}; }
+std::vector<std::string> builtinSceneNames() {
+    return {"cornell", "cornell-emissive", "cornell-metal", "sun-room", "terrain"};
+}
 
 Scene loadScene(const std::string& nameOrPath, const LoadOptions& options) {
     if (nameOrPath == "cornell") return makeCornellBox(CornellLight::PointUnderCeiling);
     if (nameOrPath == "cornell-emissive") return makeCornellBox(CornellLight::EmissiveCeilingPatch);
+    if (nameOrPath == "cornell-metal") return makeCornellBox(CornellLight::PointWithMetalSphere);
+    if (nameOrPath == "sun-room") return makeSunRoom();
+    if (nameOrPath == "terrain") return makeTerrain();
     return loadGltf(nameOrPath, options);
 }
 
