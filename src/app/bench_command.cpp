@@ -1,9 +1,129 @@
-// vct bench: placeholder until the bench command lands; it says so instead of pretending to work.
+// vct bench: error against the path-traced references and GPU time, over a matrix of settings.
+// Writes bench.csv, bench.json and bench.svg (error against time, Pareto front, presets) into
+// --out-dir, and prints a table with one line per setting. See README, "Benchmark".
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
 #include "app/commands.h"
+#include "app/scene_setup.h"
+#include "bench/matrix.h"
+#include "bench/measure.h"
+#include "bench/report.h"
 #include "error.h"
+#include "render/camera.h"
+#include "scene/load.h"
 
 namespace vct {
+namespace {
 
-int runBench(const std::vector<std::string>&) { throw Error("'vct bench' is not built yet"); }
+void printHelp() {
+    std::printf(
+        "usage: vct bench [options]\n\n"
+        "  --scenes A,B             built-in scenes or glTF files (default: every built-in scene)\n"
+        "  --out-dir DIR            where bench.csv, bench.json and bench.svg go (default bench-results)\n"
+        "  --preset NAME            measure just that preset (fast, balanced, quality)\n"
+        "  --quick                  two cheap settings, for tests\n"
+        "  --width W --height H     image size (default 128×128, the size of the references)\n"
+        "  --frames N               measured frames per setting; medians are reported (default 3)\n"
+        "  --warmup N               frames before measuring (default 1)\n"
+        "  --reference-dir DIR      SCENE-direct.pfm and SCENE-indirect.pfm (default assets/reference)\n"
+        "  --device NAME, --validate, --gpu-timeout SECONDS   as for vct render\n");
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::istringstream stream(text);
+    for (std::string item; std::getline(stream, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    return items;
+}
+
+std::string sceneFileName(const std::string& scene) {
+    return std::filesystem::path(scene).stem().string();  // "cornell" or "model" for "dir/model.glb"
+}
+
+}  // namespace
+
+int runBench(const std::vector<std::string>& rawArguments) {
+    const auto start = std::chrono::steady_clock::now();
+    const Arguments arguments(rawArguments, {"help", "quick", "validate"},
+                              {"scenes", "out-dir", "preset", "width", "height", "frames", "warmup", "reference-dir",
+                               "device", "gpu-timeout"});
+    if (arguments.has("help")) {
+        printHelp();
+        return 0;
+    }
+    RenderSettings imageSettings;
+    imageSettings.width = arguments.unsignedInt("width", 128, 1, 16384);
+    imageSettings.height = arguments.unsignedInt("height", 128, 1, 16384);
+    const std::vector<bench::BenchSetting> matrix =
+        arguments.has("preset") ? bench::presetMatrix(arguments.text("preset", ""), imageSettings)
+        : arguments.has("quick") ? bench::quickMatrix(imageSettings)
+                                 : bench::defaultMatrix(imageSettings);
+    const std::vector<std::string> scenes =
+        arguments.has("scenes") ? splitList(arguments.text("scenes", "")) : builtinSceneNames();
+    if (scenes.empty()) throw Error("--scenes names no scene");
+    const std::string outDir = arguments.text("out-dir", "bench-results");
+    const std::string referenceDir = arguments.text("reference-dir", std::string(VCT_SOURCE_DIR) + "/assets/reference");
+    bench::MeasureOptions options;
+    options.frames = arguments.unsignedInt("frames", 3, 1, 1000);
+    options.warmupFrames = arguments.unsignedInt("warmup", 1, 0, 1000);
+    std::error_code error;
+    std::filesystem::create_directories(outDir, error);
+    if (error) throw Error("cannot create the output folder '" + outDir + "': " + error.message());
+
+    GpuContext context(contextOptionsFromArguments(arguments));
+    context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
+    bench::RunInfo info;
+    info.device = context.deviceName();
+    info.width = imageSettings.width;
+    info.height = imageSettings.height;
+    info.frames = options.frames;
+    info.warmupFrames = options.warmupFrames;
+    std::printf("vct bench: %zu settings × %zu scenes at %ux%u on %s\n", matrix.size(), scenes.size(),
+                imageSettings.width, imageSettings.height, info.device.c_str());
+
+    options.onMeasured = [](const bench::Measurement& m) {
+        std::printf("  %-16s %-30s %8.1f ms static %8.1f ms light", m.scene.c_str(), m.setting.label.c_str(),
+                    m.staticFrame.gpuMilliseconds, m.lightChangeFrame.gpuMilliseconds);
+        if (m.errors)
+            std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse, m.errors->direct.relMse,
+                        m.errors->indirect.relMse);
+        std::printf("%s\n", m.imagesFinite ? "" : "   NON-FINITE PIXELS");
+        std::fflush(stdout);
+    };
+    std::vector<bench::Measurement> measurements;
+    for (const std::string& name : scenes) {
+        Scene scene = loadScene(name);
+        for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+        if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
+        const std::optional<bench::References> references =
+            bench::loadReferences(referenceDir, sceneFileName(name), imageSettings.width, imageSettings.height);
+        if (references) info.references[scene.name] = *references;
+        else std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
+                         imageSettings.width, imageSettings.height, referenceDir.c_str());
+        for (bench::Measurement& m :
+             bench::measureScene(context, scene, matrix, references ? &*references : nullptr, options)) {
+            m.fullImage = {};  // not kept: only the numbers are written
+            measurements.push_back(std::move(m));
+        }
+    }
+    info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    const std::vector<bench::SettingSummary> summary = bench::summarize(measurements);
+    writeFileAtomically(outDir + "/bench.csv", bench::toCsv(measurements));
+    writeFileAtomically(outDir + "/bench.json", bench::toJson(measurements, summary, info));
+    writeFileAtomically(outDir + "/bench.svg", bench::toSvg(summary, info));
+    std::printf("\nmean over scenes (relMSE: full, direct, indirect light; ind.lum: indirect luminance / reference)\n%s",
+                bench::summaryTable(summary).c_str());
+    std::printf("wrote %s/bench.csv, bench.json, bench.svg in %.0f s\n", outDir.c_str(), info.seconds);
+    for (const bench::Measurement& m : measurements)
+        if (!m.imagesFinite) throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");
+    if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
+    return 0;
+}
 
 }  // namespace vct

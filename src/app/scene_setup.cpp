@@ -5,6 +5,7 @@
 
 #include "error.h"
 #include "render/camera.h"
+#include "render/presets.h"
 #include "scene/load.h"
 
 namespace vct {
@@ -12,7 +13,7 @@ namespace vct {
 std::set<std::string> sceneOptionNames() {
     return {"scene",       "width",      "height",     "mode",         "supersample", "camera-pos",
             "camera-target", "fov",      "light-dir",  "light-intensity", "device",   "ambient",
-            "shadow-map",  "local-shadow-map", "disable", "allowed-root", "gpu-timeout", "voxels", "cones", "cone-aperture", "cone-step", "voxel-mips", "bounces"};
+            "shadow-map",  "local-shadow-map", "disable", "allowed-root", "gpu-timeout", "voxels", "cones", "cone-aperture", "cone-step", "voxel-mips", "bounces", "preset"};
 }
 
 std::set<std::string> sceneFlagNames() { return {"validate", "strict"}; }
@@ -33,6 +34,7 @@ std::string sceneOptionsHelp() {
             "  --cone-step F            cone step as a fraction of its diameter (default 0.5)\n"
             "  --voxel-mips isotropic|anisotropic   one mip chain or six directional ones\n"
             "  --bounces 1|2            2 re-injects the light gathered by the voxels (default 1)\n"
+            "  --preset fast|balanced|quality   start from a preset; the options above override it\n"
             "  --camera-pos x,y,z --camera-target x,y,z --fov DEGREES   override the scene camera\n"
             "  --light-dir x,y,z        direction the sun's light travels (adds a sun if the scene has none)\n"
             "  --light-intensity E      that sun's illuminance (default 3)\n"
@@ -64,6 +66,11 @@ ContextOptions contextOptionsFromArguments(const Arguments& arguments) {
 
 RenderSettings renderSettingsFromArguments(const Arguments& arguments) {
     RenderSettings settings;
+    if (arguments.has("preset")) {
+        const std::optional<RenderSettings> preset = findRenderPreset(arguments.text("preset", ""));
+        if (!preset) throw Error("--preset must be fast, balanced or quality, not '" + arguments.text("preset", "") + "'");
+        settings = *preset;
+    }
     settings.width = arguments.unsignedInt("width", settings.width, 1, 16384);
     settings.height = arguments.unsignedInt("height", settings.height, 1, 16384);
     settings.supersample = arguments.unsignedInt("supersample", settings.supersample, 1, 8);

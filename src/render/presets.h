@@ -3,6 +3,7 @@
 // whoever applies one keeps its own width and height.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,5 +14,8 @@ namespace vct {
 
 // fast, balanced, quality: from cheapest to closest to the path-traced reference.
 std::vector<std::pair<std::string, RenderSettings>> renderPresets();
+
+// The preset called `name`, or nullopt.
+std::optional<RenderSettings> findRenderPreset(const std::string& name);
 
 }  // namespace vct

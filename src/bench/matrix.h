@@ -1,0 +1,35 @@
+// The settings `vct bench` measures: a default matrix that runs on lavapipe in a few minutes, a
+// tiny one for tests, and the named presets (src/render/presets.h) placed among them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/settings.h"
+
+namespace vct::bench {
+
+struct BenchSetting {
+    std::string label;     // short, e.g. "v64 c6 a60 s0.5 aniso b1"
+    std::string preset;    // the preset this setting is, or empty
+    RenderSettings settings;
+};
+
+// "v64 c6 a60 s0.5 aniso b1", plus " ss2" when it supersamples, " sm1024" for a smaller sun shadow map.
+std::string settingLabel(const RenderSettings& settings);
+
+// One axis at a time around a cheap base (64³, 6 cones of 60°, step 0.5, anisotropic, 1 bounce),
+// a few combinations, and every preset; image size from `imageSettings`.
+std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings);
+// Two cheap settings at 32³, for tests.
+std::vector<BenchSetting> quickMatrix(const RenderSettings& imageSettings);
+// Just the preset `name`; throws vct::Error naming the presets when there is none by that name.
+std::vector<BenchSetting> presetMatrix(const std::string& name, const RenderSettings& imageSettings);
+
+// True when two settings render the same image at the same cost (everything but image size equal
+// in the fields the benchmark varies or a preset sets).
+bool sameMeasuredSettings(const RenderSettings& a, const RenderSettings& b);
+// True when `b` can reuse a Renderer made for `a` (same voxels, mips, bounces, shadow maps, size).
+bool sameRenderer(const RenderSettings& a, const RenderSettings& b);
+
+}  // namespace vct::bench

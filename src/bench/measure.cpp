@@ -1,0 +1,158 @@
+#include "bench/measure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <regex>
+#include <sstream>
+
+#include "error.h"
+#include "render/renderer.h"
+
+namespace vct::bench {
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t middle = values.size() / 2;
+    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+FrameTiming medianTiming(const std::vector<FrameStats>& frames) {
+    FrameTiming timing;
+    std::vector<double> gpu, cpu;
+    std::vector<std::string> order;  // pass names in the order they ran
+    std::map<std::string, std::vector<double>> perPass;
+    for (const FrameStats& frame : frames) {
+        gpu.push_back(frame.gpuMilliseconds());
+        cpu.push_back(frame.cpuMilliseconds);
+        for (const PassTime& pass : frame.passes) {
+            if (!perPass.count(pass.name)) order.push_back(pass.name);
+            perPass[pass.name].push_back(pass.milliseconds);
+        }
+    }
+    timing.gpuMilliseconds = median(gpu);
+    timing.cpuMilliseconds = median(cpu);
+    for (const std::string& name : order) timing.passes.push_back({name, median(perPass[name])});
+    return timing;
+}
+
+bool finite(const Image& image) {
+    return std::all_of(image.rgb.begin(), image.rgb.end(), [](float v) { return std::isfinite(v); });
+}
+
+// A number from a flat JSON object such as the path tracer's sidecar; −1 when it is not there.
+double jsonNumber(const std::string& path, const std::string& key) {
+    std::ifstream file(path);
+    if (!file) return -1.0;
+    std::stringstream text;
+    text << file.rdbuf();
+    std::smatch match;
+    const std::string content = text.str();
+    if (!std::regex_search(content, match, std::regex("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)"))) return -1.0;
+    return std::stod(match[1].str());
+}
+
+}  // namespace
+
+std::optional<References> loadReferences(const std::string& directory, const std::string& scene, uint32_t width,
+                                         uint32_t height) {
+    const std::string base = directory + "/" + scene;
+    if (!std::filesystem::exists(base + "-direct.pfm") || !std::filesystem::exists(base + "-indirect.pfm"))
+        return std::nullopt;
+    References references;
+    references.direct = readPfm(base + "-direct.pfm");
+    references.indirect = readPfm(base + "-indirect.pfm");
+    if (references.direct.width != width || references.direct.height != height ||
+        references.indirect.width != width || references.indirect.height != height)
+        return std::nullopt;
+    references.full = std::filesystem::exists(base + "-full.pfm") ? readPfm(base + "-full.pfm")
+                                                                  : addImages(references.direct, references.indirect);
+    references.directNoise = jsonNumber(base + "-direct.json", "relative_noise");
+    references.indirectNoise = jsonNumber(base + "-indirect.json", "relative_noise");
+    references.directSpp = uint32_t(std::max(0.0, jsonNumber(base + "-direct.json", "spp")));
+    references.indirectSpp = uint32_t(std::max(0.0, jsonNumber(base + "-indirect.json", "spp")));
+    return references;
+}
+
+std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene, const std::vector<BenchSetting>& settings,
+                                      const References* references, const MeasureOptions& options) {
+    // Settings that share a Renderer run one after another; results go back in the caller's order.
+    std::vector<size_t> order(settings.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::vector<size_t> group(settings.size());
+    for (size_t i = 0; i < settings.size(); ++i) {
+        group[i] = i;
+        for (size_t j = 0; j < i; ++j)
+            if (sameRenderer(settings[j].settings, settings[i].settings)) {
+                group[i] = group[j];
+                break;
+            }
+    }
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return group[a] < group[b]; });
+
+    std::vector<Measurement> results(settings.size());
+    std::unique_ptr<Renderer> renderer;
+    double voxelizeMilliseconds = 0.0;
+    for (size_t index : order) {
+        const BenchSetting& setting = settings[index];
+        if (!renderer || !sameRenderer(renderer->settings(), setting.settings)) {
+            renderer.reset();  // one Renderer's memory at a time
+            renderer = std::make_unique<Renderer>(context, scene, setting.settings);
+            const FrameStats first = renderer->renderFrame();  // everything runs: the warm-up
+            voxelizeMilliseconds = 0.0;
+            for (const PassTime& pass : first.passes)
+                if (pass.name == "voxelize") voxelizeMilliseconds = pass.milliseconds;
+            for (uint32_t i = 0; i < options.warmupFrames; ++i) renderer->renderFrame();
+        }
+        Measurement& m = results[index];
+        m.scene = scene.name;
+        m.setting = setting;
+        m.voxelizeMilliseconds = voxelizeMilliseconds;
+
+        RenderSettings shading = setting.settings;
+        shading.mode = RenderMode::Full;
+        renderer->setShadingSettings(shading);
+        // Light changes first: the first one also re-lights the voxels with this setting's cones
+        // (a second bounce gathers with them), so the static frames after it show this setting.
+        std::vector<FrameStats> frames;
+        for (uint32_t i = 0; i < options.frames; ++i) {
+            renderer->setLights(renderer->lights());
+            frames.push_back(renderer->renderFrame());
+        }
+        m.lightChangeFrame = medianTiming(frames);
+
+        frames.clear();
+        for (uint32_t i = 0; i < options.frames; ++i) frames.push_back(renderer->renderFrame());
+        m.staticFrame = medianTiming(frames);
+        m.fullImage = renderer->readImage();
+        m.deviceMemoryBytes = renderer->deviceMemoryBytes();
+
+        shading.mode = RenderMode::Direct;
+        renderer->setShadingSettings(shading);
+        renderer->renderFrame();
+        const Image direct = renderer->readImage();
+        shading.mode = RenderMode::Indirect;
+        renderer->setShadingSettings(shading);
+        renderer->renderFrame();
+        const Image indirect = renderer->readImage();
+        shading.mode = RenderMode::Full;
+        renderer->setShadingSettings(shading);
+
+        m.imagesFinite = finite(m.fullImage) && finite(direct) && finite(indirect);
+        if (references) {
+            m.errors = ModeErrors{compareImages(m.fullImage, references->full),
+                                  compareImages(direct, references->direct),
+                                  compareImages(indirect, references->indirect)};
+        }
+        if (options.onMeasured) options.onMeasured(m);
+    }
+    return results;
+}
+
+}  // namespace vct::bench

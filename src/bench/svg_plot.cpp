@@ -1,0 +1,144 @@
+#include "bench/svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace vct::bench {
+namespace {
+
+constexpr double kWidth = 900, kHeight = 600;
+constexpr double kLeft = 90, kRight = 30, kTop = 70, kBottom = 70;  // margins around the plot area
+
+// A logarithmic axis spanning whole decades around [lo, hi].
+struct LogAxis {
+    double lowDecade = 0, highDecade = 1;
+    LogAxis(double lo, double hi) {
+        lowDecade = std::floor(std::log10(lo));
+        highDecade = std::ceil(std::log10(hi));
+        if (highDecade <= lowDecade) highDecade = lowDecade + 1;
+    }
+    double fraction(double value) const { return (std::log10(value) - lowDecade) / (highDecade - lowDecade); }
+};
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
+
+}  // namespace
+
+std::string escapeXml(const std::string& text) {
+    std::string escaped;
+    for (char c : text) {
+        if (c == '&') escaped += "&amp;";
+        else if (c == '<') escaped += "&lt;";
+        else if (c == '>') escaped += "&gt;";
+        else if (c == '"') escaped += "&quot;";
+        else escaped += c;
+    }
+    return escaped;
+}
+
+std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const PlotText& text) {
+    std::vector<PlotPoint> points;
+    for (const PlotPoint& p : allPoints)
+        if (std::isfinite(p.x) && std::isfinite(p.y) && p.x > 0 && p.y > 0) points.push_back(p);
+    double xLo = 1, xHi = 10, yLo = 0.01, yHi = 1;
+    if (!points.empty()) {
+        xLo = xHi = points[0].x;
+        yLo = yHi = points[0].y;
+        for (const PlotPoint& p : points) {
+            xLo = std::min(xLo, p.x), xHi = std::max(xHi, p.x);
+            yLo = std::min(yLo, p.y), yHi = std::max(yHi, p.y);
+        }
+    }
+    const LogAxis xAxis(xLo, xHi), yAxis(yLo, yHi);
+    const double plotWidth = kWidth - kLeft - kRight, plotHeight = kHeight - kTop - kBottom;
+    const auto px = [&](double x) { return kLeft + xAxis.fraction(x) * plotWidth; };
+    const auto py = [&](double y) { return kTop + (1.0 - yAxis.fraction(y)) * plotHeight; };
+
+    std::ostringstream svg;
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
+        << "\" viewBox=\"0 0 " << kWidth << " " << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+        << "<text x=\"" << kWidth / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"16\">" << escapeXml(text.title)
+        << "</text>\n<text x=\"" << kWidth / 2 << "\" y=\"44\" text-anchor=\"middle\" fill=\"#555\">"
+        << escapeXml(text.note) << "</text>\n";
+
+    // Grid lines at 1, 2 and 5 × each decade; labels at the decades and, on short axes, the 2s and 5s.
+    const auto gridLines = [&](const LogAxis& axis, bool horizontal) {
+        const bool labelAll = axis.highDecade - axis.lowDecade <= 2;
+        for (double decade = axis.lowDecade; decade <= axis.highDecade; ++decade) {
+            for (double step : {1.0, 2.0, 5.0}) {
+                const double value = step * std::pow(10.0, decade);
+                if (axis.fraction(value) > 1.0 + 1e-9) continue;
+                const bool major = step == 1.0;
+                const double at = horizontal ? py(value) : px(value);
+                svg << "<line " << (horizontal ? "x1=\"" + number(kLeft) + "\" x2=\"" + number(kLeft + plotWidth) +
+                                                     "\" y1=\"" + number(at) + "\" y2=\"" + number(at)
+                                               : "y1=\"" + number(kTop) + "\" y2=\"" + number(kTop + plotHeight) +
+                                                     "\" x1=\"" + number(at) + "\" x2=\"" + number(at))
+                    << "\" stroke=\"" << (major ? "#bbb" : "#e4e4e4") << "\"/>\n";
+                if (!major && !labelAll) continue;
+                if (horizontal)
+                    svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << at + 4 << "\" text-anchor=\"end\">" << number(value)
+                        << "</text>\n";
+                else
+                    svg << "<text x=\"" << at << "\" y=\"" << kTop + plotHeight + 18 << "\" text-anchor=\"middle\">"
+                        << number(value) << "</text>\n";
+            }
+        }
+    };
+    gridLines(xAxis, false);
+    gridLines(yAxis, true);
+    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
+        << "\" fill=\"none\" stroke=\"#333\"/>\n"
+        << "<text x=\"" << kLeft + plotWidth / 2 << "\" y=\"" << kHeight - 24 << "\" text-anchor=\"middle\">"
+        << escapeXml(text.xLabel) << "</text>\n"
+        << "<text transform=\"translate(22," << kTop + plotHeight / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
+        << escapeXml(text.yLabel) << "</text>\n";
+
+    // The front as a staircase: from each front point, right to the next one's cost, then down.
+    std::vector<const PlotPoint*> front;
+    for (const PlotPoint& p : points)
+        if (p.onFront) front.push_back(&p);
+    std::sort(front.begin(), front.end(), [](const PlotPoint* a, const PlotPoint* b) { return a->x < b->x; });
+    if (!front.empty()) {
+        svg << "<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\" points=\"";
+        for (size_t i = 0; i < front.size(); ++i) {
+            svg << number(px(front[i]->x)) << "," << number(py(front[i]->y)) << " ";
+            if (i + 1 < front.size()) svg << number(px(front[i + 1]->x)) << "," << number(py(front[i]->y)) << " ";
+        }
+        svg << "\"/>\n";
+    }
+
+    for (const PlotPoint& p : points) {
+        const bool preset = !p.preset.empty();
+        const std::string fill = preset ? "#1f77b4" : p.onFront ? "#d62728" : "#888";
+        svg << "<circle cx=\"" << number(px(p.x)) << "\" cy=\"" << number(py(p.y)) << "\" r=\"" << (preset ? 7 : 4)
+            << "\" fill=\"" << fill << "\"" << (preset ? " stroke=\"black\"" : "") << "><title>" << escapeXml(p.label)
+            << ": " << number(p.x) << ", " << number(p.y) << "</title></circle>\n";
+        svg << "<text x=\"" << number(px(p.x) + 9) << "\" y=\"" << number(py(p.y) - 6) << "\" font-size=\""
+            << (preset ? 13 : 10) << "\" fill=\"" << (preset ? "#1f77b4" : "#444") << "\""
+            << (preset ? " font-weight=\"bold\"" : "") << ">"
+            << escapeXml(preset ? p.preset + " (" + p.label + ")" : p.label) << "</text>\n";
+    }
+
+    // Legend.
+    const double lx = kLeft + plotWidth - 190, ly = kTop + 12;
+    svg << "<rect x=\"" << lx - 8 << "\" y=\"" << ly - 12 << "\" width=\"190\" height=\"58\" fill=\"white\" "
+        << "stroke=\"#999\"/>\n"
+        << "<circle cx=\"" << lx << "\" cy=\"" << ly << "\" r=\"4\" fill=\"#888\"/><text x=\"" << lx + 10 << "\" y=\""
+        << ly + 4 << "\">setting</text>\n"
+        << "<circle cx=\"" << lx << "\" cy=\"" << ly + 17 << "\" r=\"4\" fill=\"#d62728\"/><text x=\"" << lx + 10
+        << "\" y=\"" << ly + 21 << "\">on the Pareto front</text>\n"
+        << "<circle cx=\"" << lx << "\" cy=\"" << ly + 34 << "\" r=\"6\" fill=\"#1f77b4\" stroke=\"black\"/><text x=\""
+        << lx + 10 << "\" y=\"" << ly + 38 << "\">preset</text>\n"
+        << "</svg>\n";
+    return svg.str();
+}
+
+}  // namespace vct::bench

@@ -1,0 +1,140 @@
+// vct bench's error metrics and Pareto front on inputs whose answers are known by hand.
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "bench/metrics.h"
+#include "bench/pareto.h"
+#include "bench/svg_plot.h"
+#include "error.h"
+
+namespace vct::bench {
+namespace {
+
+Image uniformImage(uint32_t width, uint32_t height, float value) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgb.assign(size_t(width) * height * 3, value);
+    return image;
+}
+
+void setPixel(Image& image, uint32_t x, uint32_t y, float value) {
+    for (int c = 0; c < 3; ++c) image.pixel(x, y)[c] = value;
+}
+
+TEST(BenchMetrics, IdenticalImagesHaveNoError) {
+    const Image reference = uniformImage(4, 3, 0.7f);
+    const ImageError error = compareImages(reference, reference);
+    EXPECT_EQ(error.relMse, 0.0);
+    EXPECT_EQ(error.rmse, 0.0);
+    EXPECT_DOUBLE_EQ(error.luminanceRatio, 1.0);
+    EXPECT_EQ(error.shareOff, 0.0);
+}
+
+TEST(BenchMetrics, TwiceTheReferenceGivesKnownValues) {
+    // r = 1 everywhere, x = 2: relMSE = 1 / (1 + (0.1 · 1)²), RMSE = 1, ratio 2, every pixel off.
+    const ImageError error = compareImages(uniformImage(8, 8, 2.0f), uniformImage(8, 8, 1.0f));
+    EXPECT_NEAR(error.relMse, 1.0 / 1.01, 1e-12);
+    EXPECT_NEAR(error.rmse, 1.0, 1e-12);
+    EXPECT_NEAR(error.luminanceRatio, 2.0, 1e-12);
+    EXPECT_EQ(error.shareOff, 1.0);
+}
+
+TEST(BenchMetrics, HandComputedTwoPixelImage) {
+    // Reference: one white pixel (luminance 1) and one black; the image is 10 % brighter on the white.
+    Image reference = uniformImage(2, 1, 0.0f), image = uniformImage(2, 1, 0.0f);
+    setPixel(reference, 0, 0, 1.0f);
+    setPixel(image, 0, 0, 1.1f);
+    const ImageError error = compareImages(image, reference);
+    // Mean channel value 0.5, so ε = 0.05²; three channels of 0.1² / (1 + ε) over six channels.
+    EXPECT_NEAR(error.relMse, 0.5 * 0.01 / (1.0 + 0.0025), 1e-6);
+    EXPECT_NEAR(error.rmse, std::sqrt(0.005), 1e-6);
+    EXPECT_NEAR(error.luminanceRatio, 1.1, 1e-6);
+    // Off by 0.1 against a tolerance of 0.1 · 1 + 0.01 · 0.5 = 0.105: not off.
+    EXPECT_EQ(error.shareOff, 0.0);
+}
+
+TEST(BenchMetrics, BlackPixelsWithinTheAbsoluteFloorAreNotOff) {
+    // Mean reference luminance 0.5: the floor is 0.005 on the black pixel.
+    Image reference = uniformImage(2, 1, 0.0f);
+    setPixel(reference, 0, 0, 1.0f);
+    Image image = reference;
+    setPixel(image, 1, 0, 0.004f);
+    EXPECT_EQ(compareImages(image, reference).shareOff, 0.0);
+    setPixel(image, 1, 0, 0.006f);
+    EXPECT_EQ(compareImages(image, reference).shareOff, 0.5);
+}
+
+TEST(BenchMetrics, RelativeMetricsDoNotDependOnTheUnitOfRadiance) {
+    Image reference = uniformImage(3, 3, 0.2f), image = uniformImage(3, 3, 0.25f);
+    setPixel(reference, 1, 1, 0.0f);
+    setPixel(image, 2, 0, 0.05f);
+    const ImageError small = compareImages(image, reference);
+    for (float& v : reference.rgb) v *= 1000.0f;
+    for (float& v : image.rgb) v *= 1000.0f;
+    const ImageError large = compareImages(image, reference);
+    EXPECT_NEAR(large.relMse, small.relMse, 1e-6 * small.relMse);  // float rounding of × 1000
+    EXPECT_NEAR(large.luminanceRatio, small.luminanceRatio, 1e-6);
+    EXPECT_EQ(large.shareOff, small.shareOff);
+    EXPECT_NEAR(large.rmse, 1000.0 * small.rmse, 1e-3 * small.rmse);
+}
+
+TEST(BenchMetrics, NonFinitePixelsCountAsOffAndPropagate) {
+    const Image reference = uniformImage(2, 2, 1.0f);
+    Image image = reference;
+    image.pixel(0, 0)[1] = std::numeric_limits<float>::quiet_NaN();
+    const ImageError error = compareImages(image, reference);
+    EXPECT_EQ(error.shareOff, 0.25);
+    EXPECT_TRUE(std::isnan(error.relMse));
+}
+
+TEST(BenchMetrics, DifferentSizesAreAnError) {
+    EXPECT_THROW(compareImages(uniformImage(2, 2, 1.0f), uniformImage(2, 3, 1.0f)), Error);
+}
+
+TEST(BenchMetrics, FullReferenceIsTheSumOfDirectAndIndirect) {
+    const Image sum = addImages(uniformImage(2, 2, 0.25f), uniformImage(2, 2, 0.5f));
+    for (float v : sum.rgb) EXPECT_EQ(v, 0.75f);
+}
+
+TEST(ParetoFront, KeepsOnlyPointsNoOtherBeatsOnBothAxes) {
+    const std::vector<CostAndError> points = {
+        {1.0, 5.0},  // 0: cheapest
+        {2.0, 3.0},  // 1
+        {3.0, 4.0},  // 2: beaten by 1
+        {4.0, 1.0},  // 3
+        {2.0, 3.0},  // 4: duplicate of 1, not kept twice
+        {5.0, 1.0},  // 5: as good as 3 but dearer
+        {4.0, 2.0},  // 6: as dear as 3 but worse
+    };
+    EXPECT_EQ(paretoFront(points), (std::vector<size_t>{0, 1, 3}));
+}
+
+TEST(ParetoFront, IgnoresNonFinitePointsAndHandlesEmptyInput) {
+    EXPECT_TRUE(paretoFront({}).empty());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(paretoFront({{1.0, nan}, {2.0, 1.0}, {nan, 0.1}}), (std::vector<size_t>{1}));
+}
+
+TEST(SvgPlot, DrawsEveryPointTheFrontAndEscapesLabels) {
+    const std::string svg = plotErrorAgainstTime(
+        {{"a<b", 10.0, 0.1, true, ""}, {"c", 100.0, 0.01, true, "quality"}, {"d", 50.0, 0.5, false, ""},
+         {"skipped", 0.0, 1.0, false, ""}},
+        {"title", "x", "y", "note & more"});
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+    EXPECT_NE(svg.find("<polyline"), std::string::npos);
+    EXPECT_NE(svg.find("a&lt;b"), std::string::npos);
+    EXPECT_NE(svg.find("note &amp; more"), std::string::npos);
+    EXPECT_NE(svg.find("quality (c)"), std::string::npos);
+    EXPECT_EQ(svg.find("skipped"), std::string::npos);  // x = 0 has no place on a log axis
+    size_t circles = 0;
+    for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+    EXPECT_EQ(circles, 3u + 3u);  // three points and the legend's three
+}
+
+}  // namespace
+}  // namespace vct::bench
