@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Regenerates the path-traced references `vct bench` measures against:
+#   assets/reference/SCENE-direct.pfm, SCENE-indirect.pfm (128×128 linear radiance) and their
+#   .json sidecars (spp, seconds, mean luminance, per-pixel relative noise).
+# Full light is their sum; `vct bench` adds them when it loads them.
+#
+#   tools/make_references.sh [SCENE...]        (default: every built-in scene)
+#   BUILD=build-bench THREADS=1 tools/make_references.sh cornell
+#
+# Images depend on the seed and the sample count, not on THREADS. The sample counts below reach
+# about 3 % per-pixel noise on indirect light and 1–2 % on direct light (see README, "Benchmark"),
+# far below the renderer's own error; on one idle core all of them take about 7 minutes.
+set -euo pipefail
+
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${BUILD:-build}"
+[[ "$build" = /* ]] || build="$root/$build"
+pathtrace="$build/tools/vct_pathtrace"
+threads="${THREADS:-$(nproc)}"
+out="$root/assets/reference"
+size=128
+
+if [[ ! -x "$pathtrace" ]]; then
+    echo "make_references.sh: $pathtrace is missing; build it first (ninja -C $build vct_pathtrace)" >&2
+    exit 1
+fi
+
+# Samples per pixel for each scene's direct and indirect light: the indirect light of the closed
+# rooms is the noisy part; the terrain's open sky lets most indirect paths end early.
+spp_for() {
+    case "$1:$2" in
+        terrain:indirect) echo 512 ;;
+        cornell-emissive:indirect) echo 1024 ;;  # paths find the lamp by NEE and MIS: less noise
+        *:indirect) echo 2048 ;;
+        cornell-emissive:direct) echo 128 ;;  # only the lamp seen by the camera: no light sampling
+        *:direct) echo 512 ;;
+    esac
+}
+
+scenes=("$@")
+[[ ${#scenes[@]} -gt 0 ]] || scenes=(cornell cornell-emissive cornell-metal sun-room terrain)
+mkdir -p "$out"
+for scene in "${scenes[@]}"; do
+    for mode in direct indirect; do
+        "$pathtrace" --scene "$scene" --mode "$mode" --width $size --height $size --spp "$(spp_for "$scene" "$mode")" \
+            --threads "$threads" --seed 1 --out "$out/$scene-$mode.pfm"
+    done
+done
