@@ -66,6 +66,16 @@ VKAPI_ATTR VkBool32 VKAPI_CALL GpuContext::onDebugMessage(VkDebugUtilsMessageSev
 }
 
 GpuContext::GpuContext(const ContextOptions& options) {
+    // A destructor runs only for a finished constructor: clean up here what a failed step left.
+    try {
+        create(options);
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
+void GpuContext::create(const ContextOptions& options) {
     const char* environmentDevice = std::getenv("VCT_DEVICE");
     const std::string wantedDevice =
         !options.deviceName.empty() ? options.deviceName : (environmentDevice ? environmentDevice : "");
@@ -192,18 +202,24 @@ GpuContext::GpuContext(const ContextOptions& options) {
     VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool));
 }
 
-GpuContext::~GpuContext() {
+GpuContext::~GpuContext() { destroy(); }
+
+void GpuContext::destroy() {
     if (device) {
-        vkDeviceWaitIdle(device);
-        vkDestroyCommandPool(device, commandPool, nullptr);
+        vkDeviceWaitIdle(device);  // may report VK_ERROR_DEVICE_LOST; destroying is still allowed then
+        if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
         vkDestroyDevice(device, nullptr);
+        device = VK_NULL_HANDLE;
+        commandPool = VK_NULL_HANDLE;
     }
     if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        auto destroyMessenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-        destroy(instance, messenger_, nullptr);
+        destroyMessenger(instance, messenger_, nullptr);
+        messenger_ = VK_NULL_HANDLE;
     }
     if (instance) vkDestroyInstance(instance, nullptr);
+    instance = VK_NULL_HANDLE;
 }
 
 std::vector<std::string> GpuContext::validationMessages() const {

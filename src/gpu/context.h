@@ -51,6 +51,11 @@ public:
     double fenceTimeoutSeconds = 120.0;
 
 private:
+    // The constructor's steps, and the destructor's: the constructor calls destroy() when a step
+    // throws, so a context that fails half-way (no device, a missing feature) leaks nothing.
+    void create(const ContextOptions& options);
+    void destroy();
+
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;

@@ -30,6 +30,14 @@ static VkDeviceMemory allocate(GpuContext& context, const VkMemoryRequirements& 
 
 Buffer::Buffer(GpuContext& context, VkDeviceSize bufferSize, VkBufferUsageFlags usage, bool hostVisible)
     : size(bufferSize), device_(context.device) {
+    // No destructor runs for an unfinished constructor: when a step below throws (out of memory is
+    // an error a user can meet), free what the earlier steps created, so the error exits cleanly.
+    struct ReleaseOnThrow {
+        Buffer* self;
+        ~ReleaseOnThrow() {
+            if (self) self->release();
+        }
+    } releaseOnThrow{this};
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = bufferSize;
     info.usage = usage;
@@ -42,6 +50,7 @@ Buffer::Buffer(GpuContext& context, VkDeviceSize bufferSize, VkBufferUsageFlags 
     memory_ = allocate(context, requirements, properties, "a buffer");
     VK_CHECK(vkBindBufferMemory(device_, buffer, memory_, 0));
     if (hostVisible) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped));
+    releaseOnThrow.self = nullptr;
 }
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
@@ -84,6 +93,14 @@ static VkImageView createView(VkDevice device, VkImage image, const ImageDesc& d
 }
 
 GpuImage::GpuImage(GpuContext& context, const ImageDesc& imageDesc) : desc(imageDesc), device_(context.device) {
+    // No destructor runs for an unfinished constructor: when a step below throws (out of memory is
+    // an error a user can meet), free what the earlier steps created, so the error exits cleanly.
+    struct ReleaseOnThrow {
+        GpuImage* self;
+        ~ReleaseOnThrow() {
+            if (self) self->release();
+        }
+    } releaseOnThrow{this};
     aspect = isDepthFormat(desc.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = desc.type;
@@ -118,6 +135,7 @@ GpuImage::GpuImage(GpuContext& context, const ImageDesc& imageDesc) : desc(image
         for (uint32_t layer = 0; layer < desc.layers; ++layer)
             layerViews.push_back(
                 createView(device_, image, desc, VK_IMAGE_VIEW_TYPE_2D, aspect, 0, desc.mipLevels, layer, 1));
+    releaseOnThrow.self = nullptr;
 }
 
 GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
@@ -145,7 +163,9 @@ void GpuImage::release() {
     vkFreeMemory(device_, memory_, nullptr);
     mipViews.clear();
     layerViews.clear();
+    view = VK_NULL_HANDLE;
     image = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
     device_ = VK_NULL_HANDLE;
 }
 

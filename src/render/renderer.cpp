@@ -8,6 +8,7 @@
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
+#include "render/renderer_limits.h"
 #include "render/voxel_grid_fit.h"
 
 namespace vct {
@@ -43,9 +44,16 @@ static Buffer hostArray(GpuContext& context, size_t count, VkBufferUsageFlags us
     return Buffer(context, VkDeviceSize(std::max<size_t>(count, 1) * sizeof(T)), usage, true);
 }
 
+// Checks the settings against the device before the members below allocate anything.
+static const RenderSettings& checkedSettings(const GpuContext& context, const Scene& scene,
+                                             const RenderSettings& settings) {
+    checkRendererLimits(context, scene, settings);
+    return settings;
+}
+
 Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings& settings)
     : context_(context),
-      settings_(settings),
+      settings_(checkedSettings(context, scene, settings)),
       sceneBounds_(scene.bounds()),
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
@@ -98,9 +106,13 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     lightsBuffer_ = hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     shadowViewsBuffer_ =
         hostArray<glsl::ShadowView>(context_, shadowLayout_.views.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    std::memcpy(lightsBuffer_.mapped, shadowLayout_.lights.data(), shadowLayout_.lights.size() * sizeof(glsl::GpuLight));
-    std::memcpy(shadowViewsBuffer_.mapped, shadowLayout_.views.data(),
-                shadowLayout_.views.size() * sizeof(glsl::ShadowView));
+    // A scene without lights has empty arrays, whose data() may be null: memcpy must not see it (UBSan).
+    if (!shadowLayout_.lights.empty())
+        std::memcpy(lightsBuffer_.mapped, shadowLayout_.lights.data(),
+                    shadowLayout_.lights.size() * sizeof(glsl::GpuLight));
+    if (!shadowLayout_.views.empty())
+        std::memcpy(shadowViewsBuffer_.mapped, shadowLayout_.views.data(),
+                    shadowLayout_.views.size() * sizeof(glsl::ShadowView));
     // New arrays only when the number of shadow maps changed; otherwise they are redrawn in place.
     if (!shadowPass_ || previous.sunLayers != shadowLayout_.sunLayers ||
         previous.localLayers != shadowLayout_.localLayers) {
