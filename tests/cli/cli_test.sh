@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# `vct render` as a user meets it: each case runs the command line once and checks its exit code,
+# its one-line error (the line "vct render: error: ..." must name the problem) and that an output
+# file that existed before a failed or interrupted run is left exactly as it was, with no
+# temporary file beside it.
+#
+#   cli_test.sh CASE VCT_EXECUTABLE        (CTest runs one case per test; see CMakeLists.txt)
+set -uo pipefail
+case_name="$1"
+vct="$2"
+work="$(mktemp -d "${TMPDIR:-/tmp}/vct-cli-XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-/tmp}"
+small=(--width 32 --height 32 --supersample 1 --voxels 32 --shadow-map 256 --local-shadow-map 128)
+
+fail() {
+  echo "FAIL ($case_name): $*"
+  echo "--- stderr:"; cat "$work/stderr"
+  exit 1
+}
+
+# A good image from an earlier run, which a failed run must not touch.
+good="$work/out.png"
+printf 'a good image from an earlier run\n' >"$good"
+cp "$good" "$work/expected"
+
+# Runs vct render with the arguments; expects exit code 1 and one error line matching $1.
+expect_refusal() {
+  local pattern="$1"
+  shift
+  "$vct" render "$@" >"$work/stdout" 2>"$work/stderr"
+  local status=$?
+  [ "$status" -eq 1 ] || fail "exit code $status, expected 1"
+  local errors
+  errors=$(grep -c '^vct render: error: ' "$work/stderr")
+  [ "$errors" -eq 1 ] || fail "$errors error lines, expected exactly one"
+  grep -q '^vct render: error: .*'"$pattern" "$work/stderr" || fail "the error does not match '$pattern'"
+  if grep -qiE 'internal error|AddressSanitizer|runtime error|terminate called' "$work/stderr"; then
+    fail "not a clean refusal"
+  fi
+  echo "ok: $(grep '^vct render: error: ' "$work/stderr")"
+}
+
+expect_output_untouched() {
+  cmp -s "$good" "$work/expected" || fail "the existing output file was changed"
+  local leftovers
+  leftovers=$(find "$work" -name 'out.png.tmp*' | wc -l)
+  [ "$leftovers" -eq 0 ] || fail "a temporary output file was left behind"
+}
+
+case "$case_name" in
+  unknown-option)
+    expect_refusal "unknown option --voxel " --out "$good" --voxel 64 ;;
+  missing-value)
+    expect_refusal "option --width needs a value" --out "$good" --width ;;
+  no-output)
+    expect_refusal "render needs --out" --scene cornell ;;
+  bad-output-extension)
+    expect_refusal "must end in .pfm or .png" "${small[@]}" --out "$work/out.jpg" ;;
+  missing-scene)
+    expect_refusal "$work/missing.gltf: file not found" --scene "$work/missing.gltf" --out "$good" ;;
+  broken-gltf)
+    printf '{"asset": {"version": "2.0"}, "meshes": [ {"primitives": [' >"$work/broken.gltf"
+    expect_refusal "broken.gltf: not a valid glTF file" --scene "$work/broken.gltf" --out "$good" ;;
+  escaping-uri)
+    printf '{"asset":{"version":"2.0"},"buffers":[{"uri":"../../etc/hostname","byteLength":4}]}' >"$work/escape.gltf"
+    expect_refusal "escape.gltf: buffers\[0\].uri: '../../etc/hostname' leaves the allowed folder" --scene "$work/escape.gltf" --out "$good" ;;
+  voxels-out-of-range)
+    expect_refusal "\-\-voxels must be a whole number from 32 to 512, not '1000'" --voxels 1000 --out "$good" ;;
+  voxels-not-power-of-two)
+    expect_refusal "voxel resolution must be a power of two from 32 to 512, not 48" "${small[@]}" --voxels 48 --out "$good" ;;
+  image-beyond-device)
+    # 12000 × 2 samples per side is past every device's maxImageDimension2D we know (lavapipe: 16384).
+    expect_refusal "24000 samples across, more than .*'s max[A-Za-z]*" --width 12000 --height 16 --supersample 2 \
+      --voxels 32 --out "$good" ;;
+  unwritable-output)
+    expect_refusal "cannot create '$work/no-such-folder/out.png" "${small[@]}" --out "$work/no-such-folder/out.png" ;;
+  interrupted)
+    # Interrupted mid-render (Ctrl-C): the earlier image stays as it was.
+    timeout -s INT 3 "$vct" render --frames 100000 --width 64 --height 64 --voxels 32 --out "$good" \
+      >"$work/stdout" 2>"$work/stderr"
+    status=$?
+    [ "$status" -eq 124 ] || fail "exit code $status: the render was not still running after 3 s"
+    echo "ok: interrupted after 3 s" ;;
+  success-replaces)
+    "$vct" render "${small[@]}" --out "$good" >"$work/stdout" 2>"$work/stderr" || fail "render failed"
+    head -c 8 "$good" | grep -q PNG || fail "the output is not a PNG"
+    cp "$good" "$work/expected"
+    echo "ok: replaced the earlier image with a PNG" ;;
+  *)
+    echo "unknown case $case_name"; exit 2 ;;
+esac
+expect_output_untouched
