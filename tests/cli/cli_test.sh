@@ -70,8 +70,9 @@ case "$case_name" in
   voxels-not-power-of-two)
     expect_refusal "voxel resolution must be a power of two from 32 to 512, not 48" "${small[@]}" --voxels 48 --out "$good" ;;
   image-beyond-device)
-    # 12000 × 2 samples per side is past every device's maxImageDimension2D we know (lavapipe: 16384).
-    expect_refusal "24000 samples across, more than .*'s max[A-Za-z]*" --width 12000 --height 16 --supersample 2 \
+    # 16384 × 8 samples per side is past every device's maxImageDimension2D (lavapipe: 16384,
+    # desktop GPUs: 32768), while each option alone is in its range.
+    expect_refusal "131072 samples across, more than .*'s max[A-Za-z]*" --width 16384 --height 16 --supersample 8 \
       --voxels 32 --out "$good" ;;
   unwritable-output)
     expect_refusal "cannot create '$work/no-such-folder/out.png" "${small[@]}" --out "$work/no-such-folder/out.png" ;;
