@@ -30,7 +30,7 @@ seeds="$build/seeds"
 rm -rf "$seeds" && mkdir -p "$seeds" "$build/corpus" "$build/findings"
 cp tests/fuzz/seeds/* "$seeds/"
 if [ -d tests/data/fuzz-regressions ]; then
-  find tests/data/fuzz-regressions -type f -exec cp {} "$seeds/" \;
+  find tests/data/fuzz-regressions -type f ! -name '*.md' -exec cp {} "$seeds/" \;
 fi
 if [ -n "${VCT_CORPORA_DIR:-}" ]; then
   n=0
