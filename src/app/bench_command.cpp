@@ -117,7 +117,8 @@ int runBench(const std::vector<std::string>& rawArguments) {
     writeFileAtomically(outDir + "/bench.csv", bench::toCsv(measurements));
     writeFileAtomically(outDir + "/bench.json", bench::toJson(measurements, summary, info));
     writeFileAtomically(outDir + "/bench.svg", bench::toSvg(summary, info));
-    std::printf("\nmean over scenes (relMSE: full, direct, indirect light; ind.lum: indirect luminance / reference)\n%s",
+    std::printf("\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
+                "luminance / reference) geometric means\n%s",
                 bench::summaryTable(summary).c_str());
     std::printf("wrote %s/bench.csv, bench.json, bench.svg in %.0f s\n", outDir.c_str(), info.seconds);
     for (const bench::Measurement& m : measurements)

@@ -68,7 +68,11 @@ RenderSettings renderSettingsFromArguments(const Arguments& arguments) {
     RenderSettings settings;
     if (arguments.has("preset")) {
         const std::optional<RenderSettings> preset = findRenderPreset(arguments.text("preset", ""));
-        if (!preset) throw Error("--preset must be fast, balanced or quality, not '" + arguments.text("preset", "") + "'");
+        if (!preset) {
+            std::string names;
+            for (const auto& [name, unused] : renderPresets()) names += (names.empty() ? "" : ", ") + name;
+            throw Error("--preset must be one of " + names + ", not '" + arguments.text("preset", "") + "'");
+        }
         settings = *preset;
     }
     settings.width = arguments.unsignedInt("width", settings.width, 1, 16384);

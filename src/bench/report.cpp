@@ -64,6 +64,7 @@ std::vector<std::string> passNames(const std::vector<Measurement>& measurements)
 }
 
 const char* kModes[] = {"full", "direct", "indirect"};
+constexpr double kSmallestError = 1e-12;  // a perfect scene must not make a geometric mean zero
 
 const ImageError& modeError(const ModeErrors& errors, int mode) {
     return mode == 0 ? errors.full : mode == 1 ? errors.direct : errors.indirect;
@@ -103,11 +104,12 @@ std::vector<SettingSummary> summarize(const std::vector<Measurement>& measuremen
         s.lightChangeMilliseconds += m.lightChangeFrame.gpuMilliseconds;
         s.deviceMegabytes = std::max(s.deviceMegabytes, double(m.deviceMemoryBytes) / (1024.0 * 1024.0));
         if (m.errors) {
+            // Sums of logarithms: geometric means, so no one scene's scale of error dominates.
             ++s.scenesWithReference;
-            s.relMseFull += m.errors->full.relMse;
-            s.relMseDirect += m.errors->direct.relMse;
-            s.relMseIndirect += m.errors->indirect.relMse;
-            s.luminanceRatioIndirect += m.errors->indirect.luminanceRatio;
+            s.relMseFull += std::log(std::max(m.errors->full.relMse, kSmallestError));
+            s.relMseDirect += std::log(std::max(m.errors->direct.relMse, kSmallestError));
+            s.relMseIndirect += std::log(std::max(m.errors->indirect.relMse, kSmallestError));
+            s.luminanceRatioIndirect += std::log(std::max(m.errors->indirect.luminanceRatio, kSmallestError));
         }
     }
     std::vector<CostAndError> points;
@@ -116,10 +118,10 @@ std::vector<SettingSummary> summarize(const std::vector<Measurement>& measuremen
         s.staticMilliseconds /= double(sceneCounts[i]);
         s.lightChangeMilliseconds /= double(sceneCounts[i]);
         const double withReference = s.scenesWithReference ? double(s.scenesWithReference) : NAN;
-        s.relMseFull /= withReference;
-        s.relMseDirect /= withReference;
-        s.relMseIndirect /= withReference;
-        s.luminanceRatioIndirect /= withReference;
+        s.relMseFull = std::exp(s.relMseFull / withReference);
+        s.relMseDirect = std::exp(s.relMseDirect / withReference);
+        s.relMseIndirect = std::exp(s.relMseIndirect / withReference);
+        s.luminanceRatioIndirect = std::exp(s.luminanceRatioIndirect / withReference);
         points.push_back({s.staticMilliseconds, s.relMseFull});
     }
     for (size_t index : paretoFront(points)) summary[index].onFront = true;
@@ -220,7 +222,7 @@ std::string toSvg(const std::vector<SettingSummary>& summary, const RunInfo& inf
     std::vector<PlotPoint> points;
     for (const SettingSummary& s : summary) points.push_back({s.label, s.staticMilliseconds, s.relMseFull, s.onFront, s.preset});
     char note[256];
-    std::snprintf(note, sizeof note, "%s, %ux%u, median of %u frames; mean over %zu scene(s) with a reference",
+    std::snprintf(note, sizeof note, "%s, %ux%u, median of %u frames; times: mean, relMSE: geometric mean over %zu scene(s)",
                   info.device.c_str(), info.width, info.height, info.frames, info.references.size());
     return plotErrorAgainstTime(points, {"vct bench: error against frame time",
                                          "GPU time of a static frame, ms (log)",

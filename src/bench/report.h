@@ -10,15 +10,16 @@
 
 namespace vct::bench {
 
-// One setting over all scenes: times summed over scenes would favour cheap scenes' settings
-// equally, so the plot uses means.
+// One setting over all scenes. Times are arithmetic means over scenes; errors and ratios are
+// geometric means over the scenes with a reference, so a scene whose relMSE is 10× everyone
+// else's (light leaking in the sun room) does not decide the front alone.
 struct SettingSummary {
     std::string label, preset;
-    double staticMilliseconds = 0.0;       // mean over scenes of the static frame's GPU time
+    double staticMilliseconds = 0.0;       // mean of the static frame's GPU time
     double lightChangeMilliseconds = 0.0;  // ... of the frame after a light change
     double deviceMegabytes = 0.0;          // the largest over scenes
-    double relMseFull = 0.0, relMseDirect = 0.0, relMseIndirect = 0.0;  // means over scenes with a reference
-    double luminanceRatioIndirect = 0.0;
+    double relMseFull = 0.0, relMseDirect = 0.0, relMseIndirect = 0.0;  // geometric means
+    double luminanceRatioIndirect = 0.0;   // geometric mean of indirect luminance / reference
     size_t scenesWithReference = 0;
     bool onFront = false;                  // Pareto-optimal in (staticMilliseconds, relMseFull)
 };

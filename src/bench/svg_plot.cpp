@@ -8,8 +8,9 @@
 namespace vct::bench {
 namespace {
 
-constexpr double kWidth = 900, kHeight = 600;
-constexpr double kLeft = 90, kRight = 30, kTop = 70, kBottom = 70;  // margins around the plot area
+constexpr double kWidth = 1160, kHeight = 600;
+// Margins around the plot area; the right one holds the key from point numbers to settings.
+constexpr double kLeft = 90, kRight = 330, kTop = 70, kBottom = 70;
 
 // A logarithmic axis spanning whole decades around [lo, hi].
 struct LogAxis {
@@ -24,7 +25,7 @@ struct LogAxis {
 
 std::string number(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.4g", value);
+    std::snprintf(text, sizeof text, std::fabs(value) >= 1e4 && std::fabs(value) < 1e9 ? "%.0f" : "%.4g", value);
     return text;
 }
 
@@ -115,28 +116,38 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
         svg << "\"/>\n";
     }
 
-    for (const PlotPoint& p : points) {
+    // Each point carries its number; the key beside the plot names the setting, so labels of
+    // neighbouring points cannot hide each other.
+    const double keyX = kLeft + plotWidth + 20;
+    svg << "<text x=\"" << keyX << "\" y=\"" << kTop + 4 << "\" font-weight=\"bold\">key</text>\n";
+    for (size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& p = points[i];
         const bool preset = !p.preset.empty();
         const std::string fill = preset ? "#1f77b4" : p.onFront ? "#d62728" : "#888";
-        svg << "<circle cx=\"" << number(px(p.x)) << "\" cy=\"" << number(py(p.y)) << "\" r=\"" << (preset ? 7 : 4)
-            << "\" fill=\"" << fill << "\"" << (preset ? " stroke=\"black\"" : "") << "><title>" << escapeXml(p.label)
-            << ": " << number(p.x) << ", " << number(p.y) << "</title></circle>\n";
-        svg << "<text x=\"" << number(px(p.x) + 9) << "\" y=\"" << number(py(p.y) - 6) << "\" font-size=\""
-            << (preset ? 13 : 10) << "\" fill=\"" << (preset ? "#1f77b4" : "#444") << "\""
-            << (preset ? " font-weight=\"bold\"" : "") << ">"
-            << escapeXml(preset ? p.preset + " (" + p.label + ")" : p.label) << "</text>\n";
+        const std::string stroke = p.onFront ? "#d62728" : "black";
+        const std::string id = std::to_string(i + 1);
+        svg << "<g><title>" << escapeXml(p.label) << ": " << number(p.x) << ", " << number(p.y) << "</title><circle cx=\""
+            << number(px(p.x)) << "\" cy=\"" << number(py(p.y)) << "\" r=\"" << (preset ? 7 : 4) << "\" fill=\"" << fill
+            << "\"" << (preset ? " stroke=\"" + stroke + "\" stroke-width=\"2\"" : "") << "/></g>\n";
+        svg << "<text x=\"" << number(px(p.x) + (preset ? 9 : 6)) << "\" y=\"" << number(py(p.y) - 5) << "\" font-size=\""
+            << (preset ? 13 : 11) << "\" fill=\"" << (preset ? "#1f77b4" : "#444") << "\""
+            << (preset ? " font-weight=\"bold\"" : "") << ">" << escapeXml(preset ? id + " " + p.preset : id) << "</text>\n";
+        svg << "<text x=\"" << keyX << "\" y=\"" << kTop + 22 + 16 * double(i) << "\" fill=\""
+            << (preset ? "#1f77b4" : p.onFront ? "#d62728" : "#444") << "\"" << (preset ? " font-weight=\"bold\"" : "")
+            << ">" << id << "  " << escapeXml(p.label) << (preset ? "  (" + escapeXml(p.preset) + ")" : "")
+            << (p.onFront ? "  *" : "") << "</text>\n";
     }
 
-    // Legend.
-    const double lx = kLeft + plotWidth - 190, ly = kTop + 12;
-    svg << "<rect x=\"" << lx - 8 << "\" y=\"" << ly - 12 << "\" width=\"190\" height=\"58\" fill=\"white\" "
+    // Legend, in the plot's top right corner.
+    const double lx = kLeft + plotWidth - 200, ly = kTop + 12;
+    svg << "<rect x=\"" << lx - 8 << "\" y=\"" << ly - 12 << "\" width=\"200\" height=\"58\" fill=\"white\" "
         << "stroke=\"#999\"/>\n"
         << "<circle cx=\"" << lx << "\" cy=\"" << ly << "\" r=\"4\" fill=\"#888\"/><text x=\"" << lx + 10 << "\" y=\""
         << ly + 4 << "\">setting</text>\n"
         << "<circle cx=\"" << lx << "\" cy=\"" << ly + 17 << "\" r=\"4\" fill=\"#d62728\"/><text x=\"" << lx + 10
-        << "\" y=\"" << ly + 21 << "\">on the Pareto front</text>\n"
-        << "<circle cx=\"" << lx << "\" cy=\"" << ly + 34 << "\" r=\"6\" fill=\"#1f77b4\" stroke=\"black\"/><text x=\""
-        << lx + 10 << "\" y=\"" << ly + 38 << "\">preset</text>\n"
+        << "\" y=\"" << ly + 21 << "\">on the Pareto front (*)</text>\n"
+        << "<circle cx=\"" << lx << "\" cy=\"" << ly + 34 << "\" r=\"6\" fill=\"#1f77b4\" stroke=\"#d62728\" "
+        << "stroke-width=\"2\"/><text x=\"" << lx + 10 << "\" y=\"" << ly + 38 << "\">preset (red ring: on the front)</text>\n"
         << "</svg>\n";
     return svg.str();
 }

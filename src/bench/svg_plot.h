@@ -1,5 +1,6 @@
-// Error against time as an SVG scatter plot: both axes logarithmic, each setting a labelled point,
-// the Pareto front drawn as a line, presets highlighted. Plain SVG 1.1, no scripts or fonts to load.
+// Error against time as an SVG scatter plot: both axes logarithmic, each setting a numbered point
+// (a key beside the plot names it), the Pareto front drawn as a staircase, presets highlighted.
+// Plain SVG 1.1, no scripts or fonts to load.
 #pragma once
 
 #include <string>
@@ -8,7 +9,7 @@
 namespace vct::bench {
 
 struct PlotPoint {
-    std::string label;    // drawn beside the point
+    std::string label;    // in the key beside the plot; the point shows its number
     double x = 0.0;       // > 0 (log axis); points that are not are left out
     double y = 0.0;       // > 0
     bool onFront = false;

@@ -129,7 +129,8 @@ TEST(SvgPlot, DrawsEveryPointTheFrontAndEscapesLabels) {
     EXPECT_NE(svg.find("<polyline"), std::string::npos);
     EXPECT_NE(svg.find("a&lt;b"), std::string::npos);
     EXPECT_NE(svg.find("note &amp; more"), std::string::npos);
-    EXPECT_NE(svg.find("quality (c)"), std::string::npos);
+    EXPECT_NE(svg.find("2 quality"), std::string::npos);  // a preset is labelled with its name
+    EXPECT_NE(svg.find("2  c  (quality)"), std::string::npos);  // and so is its line in the key
     EXPECT_EQ(svg.find("skipped"), std::string::npos);  // x = 0 has no place on a log axis
     size_t circles = 0;
     for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
