@@ -1,6 +1,7 @@
 // vct bench: error against the path-traced references and GPU time, over a matrix of settings.
 // Writes bench.csv, bench.json and bench.svg (error against time, Pareto front, presets) into
-// --out-dir, and prints a table with one line per setting. See README, "Benchmark".
+// --out-dir, and prints a table with one line per setting; then measures the common VCT failure
+// modes (leaking, drift with resolution, flicker) into failure_modes.json. See README, "Benchmark".
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,11 +10,13 @@
 
 #include "app/commands.h"
 #include "app/scene_setup.h"
+#include "bench/failure_report.h"
 #include "bench/matrix.h"
 #include "bench/measure.h"
 #include "bench/report.h"
 #include "error.h"
 #include "render/camera.h"
+#include "render/presets.h"
 #include "scene/load.h"
 
 namespace vct {
@@ -25,7 +28,8 @@ void printHelp() {
         "  --scenes A,B             built-in scenes or glTF files (default: every built-in scene)\n"
         "  --out-dir DIR            where bench.csv, bench.json and bench.svg go (default bench-results)\n"
         "  --preset NAME            measure just that preset (fast, balanced, quality)\n"
-        "  --quick                  two cheap settings, for tests\n"
+        "  --quick                  two cheap settings, for tests (no failure modes)\n"
+        "  --no-failure-modes       skip the leak, resolution-drift and flicker measurements\n"
         "  --width W --height H     image size (default 128×128, the size of the references)\n"
         "  --frames N               measured frames per setting; medians are reported (default 3)\n"
         "  --warmup N               frames before measuring (default 1)\n"
@@ -49,7 +53,7 @@ std::string sceneFileName(const std::string& scene) {
 
 int runBench(const std::vector<std::string>& rawArguments) {
     const auto start = std::chrono::steady_clock::now();
-    const Arguments arguments(rawArguments, {"help", "quick", "validate"},
+    const Arguments arguments(rawArguments, {"help", "quick", "no-failure-modes", "validate"},
                               {"scenes", "out-dir", "preset", "width", "height", "frames", "warmup", "reference-dir",
                                "device", "gpu-timeout"});
     if (arguments.has("help")) {
@@ -96,6 +100,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
         std::fflush(stdout);
     };
     std::vector<bench::Measurement> measurements;
+    std::optional<bench::References> cornellReferences;
     for (const std::string& name : scenes) {
         Scene scene = loadScene(name);
         for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
@@ -103,6 +108,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
         const std::optional<bench::References> references =
             bench::loadReferences(referenceDir, sceneFileName(name), imageSettings.width, imageSettings.height);
         if (references) info.references[scene.name] = *references;
+        if (references && name == "cornell") cornellReferences = references;
         else std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
                          imageSettings.width, imageSettings.height, referenceDir.c_str());
         for (bench::Measurement& m :
@@ -121,6 +127,20 @@ int runBench(const std::vector<std::string>& rawArguments) {
                 "luminance / reference) geometric means\n%s",
                 bench::summaryTable(summary).c_str());
     std::printf("wrote %s/bench.csv, bench.json, bench.svg in %.0f s\n", outDir.c_str(), info.seconds);
+    if (!arguments.has("quick") && !arguments.has("no-failure-modes")) {
+        // With the preset being measured, else `balanced`.
+        const std::string presetName = arguments.text("preset", "balanced");
+        const std::optional<RenderSettings> preset = findRenderPreset(presetName);
+        RenderSettings settings = preset ? *preset : RenderSettings{};
+        settings.width = imageSettings.width;
+        settings.height = imageSettings.height;
+        const bench::FailureModeReport report =
+            bench::measureFailureModes(context, settings, cornellReferences ? &cornellReferences->indirect : nullptr);
+        writeFileAtomically(outDir + "/failure_modes.json", bench::failureModesJson(report));
+        std::printf("\n%swrote %s/failure_modes.json\n", bench::failureModesText(report).c_str(), outDir.c_str());
+        for (const bench::ResolutionLuminance& r : report.drift)
+            if (!r.finite) throw Error("the failure-mode run gave non-finite pixels at " + std::to_string(r.voxelResolution) + "³ voxels");
+    }
     for (const bench::Measurement& m : measurements)
         if (!m.imagesFinite) throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");
     if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");

@@ -1,0 +1,94 @@
+#include "bench/failure_report.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "bench/matrix.h"
+#include "render/voxel_grid_fit.h"
+#include "scene/load.h"
+
+namespace vct::bench {
+namespace {
+
+std::string format(const char* pattern, auto... values) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, values...);
+    return text;
+}
+
+// (max − min) / mean of the measured luminances.
+double spread(const std::vector<ResolutionLuminance>& drift) {
+    if (drift.empty()) return 0.0;
+    double lowest = drift[0].meanLuminance, highest = lowest, sum = 0.0;
+    for (const ResolutionLuminance& r : drift) {
+        lowest = std::min(lowest, r.meanLuminance);
+        highest = std::max(highest, r.meanLuminance);
+        sum += r.meanLuminance;
+    }
+    return sum > 0.0 ? (highest - lowest) / (sum / double(drift.size())) : 0.0;
+}
+
+}  // namespace
+
+FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings& settings,
+                                      const Image* cornellIndirectReference) {
+    FailureModeReport report;
+    report.setting = settingLabel(settings);
+
+    // The two rooms span 2 m along x, so the fitted grid's voxel is 2 m / (resolution − 2).
+    const float voxel = fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.voxelResolution).originVoxelSize.w;
+    for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
+        report.leaks.push_back({offset, measureLightLeak(context, settings, offset * voxel)});
+
+    const Scene cornell = loadScene("cornell");
+    RenderSettings indirect = settings;
+    indirect.mode = RenderMode::Indirect;
+    report.drift = measureResolutionDrift(context, cornell, indirect, {32, 64, 128, 256});
+    if (cornellIndirectReference) report.driftReference = meanLuminance(*cornellIndirectReference);
+
+    report.flickerFull = measureFlicker(context, cornell, settings, 0.001f, 0.001f);
+    report.flickerIndirect = measureFlicker(context, cornell, indirect, 0.001f, 0.001f);
+    return report;
+}
+
+std::string failureModesText(const FailureModeReport& report) {
+    std::string text = "failure modes (" + report.setting + "):\n";
+    for (const FailureModeReport::Leak& leak : report.leaks)
+        text += format("  leak, wall %+.2f voxel into its voxel: dark room %.4f of the lit room (truth 0)\n",
+                       double(leak.wallOffsetVoxels), leak.measurement.leakRatio());
+    for (const ResolutionLuminance& r : report.drift) {
+        text += format("  Cornell indirect at %3u³: mean luminance %.4f", r.voxelResolution, r.meanLuminance);
+        if (report.driftReference > 0.0) text += format(" (%.3f × path-traced)", r.meanLuminance / report.driftReference);
+        text += r.finite ? "\n" : "  NON-FINITE PIXELS\n";
+    }
+    text += format("  spread over resolutions (max − min) / mean: %.3f\n", spread(report.drift));
+    text += format("  flicker, 1 mm steps (relative L1 change): full camera %.4f light %.4f, indirect camera %.4f "
+                   "light %.4f\n",
+                   report.flickerFull.cameraChange, report.flickerFull.lightChange,
+                   report.flickerIndirect.cameraChange, report.flickerIndirect.lightChange);
+    return text;
+}
+
+std::string failureModesJson(const FailureModeReport& report) {
+    std::string json = "{\n  \"setting\": \"" + report.setting + "\",\n  \"leak\": [";
+    for (size_t i = 0; i < report.leaks.size(); ++i)
+        json += format("%s\n    {\"wall_offset_voxels\": %.4f, \"lit_room\": %.6g, \"dark_room\": %.6g, \"ratio\": %.6g}",
+                       i ? "," : "", double(report.leaks[i].wallOffsetVoxels),
+                       report.leaks[i].measurement.litRoomLuminance, report.leaks[i].measurement.darkRoomLuminance,
+                       report.leaks[i].measurement.leakRatio());
+    json += "\n  ],\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect\",";
+    json += format(" \"reference_luminance\": %.6g, \"spread\": %.6g,\n    \"resolutions\": [", report.driftReference,
+                   spread(report.drift));
+    for (size_t i = 0; i < report.drift.size(); ++i)
+        json += format("%s\n      {\"voxels\": %u, \"luminance\": %.6g, \"finite\": %s}", i ? "," : "",
+                       report.drift[i].voxelResolution, report.drift[i].meanLuminance,
+                       report.drift[i].finite ? "true" : "false");
+    json += "\n    ]\n  },\n";
+    json += format("  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": %.6g, \"light\": %.6g}, "
+                   "\"indirect\": {\"camera\": %.6g, \"light\": %.6g}}\n}\n",
+                   report.flickerFull.cameraChange, report.flickerFull.lightChange,
+                   report.flickerIndirect.cameraChange, report.flickerIndirect.lightChange);
+    return json;
+}
+
+}  // namespace vct::bench

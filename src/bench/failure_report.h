@@ -1,0 +1,35 @@
+// The failure-modes section of `vct bench`: light leaking through a thin wall, brightness against
+// voxel resolution and flicker (src/bench/failure_modes.h), measured with one setting and reported
+// as text and JSON next to the accuracy matrix. The tests hold the same measurements to bounds
+// (tests/gpu/failure_modes_test.cpp); the benchmark reports them at the bench's image size.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bench/failure_modes.h"
+
+namespace vct::bench {
+
+struct FailureModeReport {
+    std::string setting;  // the settings' label (matrix.h)
+    struct Leak {
+        float wallOffsetVoxels = 0.0f;  // where the wall sits inside its voxel
+        LeakMeasurement measurement;
+    };
+    std::vector<Leak> leaks;
+    std::vector<ResolutionLuminance> drift;  // Cornell box, indirect light
+    double driftReference = -1.0;            // the path tracer's indirect mean luminance; −1 = none
+    FlickerMeasurement flickerFull, flickerIndirect;  // 1 mm camera and light steps, Cornell box
+};
+
+// `settings` gives the image size and the cone setup; the drift runs it at 32³…256³. With the
+// Cornell box's indirect reference (same image size) the drift is also compared with it.
+FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings& settings,
+                                      const Image* cornellIndirectReference);
+
+std::string failureModesText(const FailureModeReport& report);
+std::string failureModesJson(const FailureModeReport& report);
+
+}  // namespace vct::bench
