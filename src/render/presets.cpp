@@ -8,7 +8,7 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     // light. Narrow 40° cones beat the renderer's default 60° ones at every voxel resolution, and
     // 128³ voxels measured no better than 64³.
 
-    // One 40° cone along the normal at 32³ with long steps: a fifth of `balanced`'s time for
+    // One 40° cone along the normal at 32³ with long steps: a sixth of `balanced`'s time for
     // 1.3× its error.
     RenderSettings fast;
     fast.supersample = 1;
@@ -29,7 +29,7 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     balanced.coneStep = 0.5f;
 
     // `balanced`'s cones with 2×2 supersampling: the lowest error measured, most of the gain in
-    // direct light (edges of shadows and of the sun's patch), at about 3.5× the time.
+    // direct light (edges of shadows and of the sun's patch), at about 4× the time.
     RenderSettings quality;
     quality.supersample = 2;
     quality.voxelResolution = 64;
