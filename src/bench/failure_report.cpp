@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "bench/matrix.h"
+#include "io/json_text.h"
 #include "render/voxel_grid_fit.h"
 #include "scene/load.h"
 
@@ -70,24 +71,26 @@ std::string failureModesText(const FailureModeReport& report) {
 }
 
 std::string failureModesJson(const FailureModeReport& report) {
-    std::string json = "{\n  \"setting\": \"" + report.setting + "\",\n  \"leak\": [";
-    for (size_t i = 0; i < report.leaks.size(); ++i)
-        json += format("%s\n    {\"wall_offset_voxels\": %.4f, \"lit_room\": %.6g, \"dark_room\": %.6g, \"ratio\": %.6g}",
-                       i ? "," : "", double(report.leaks[i].wallOffsetVoxels),
-                       report.leaks[i].measurement.litRoomLuminance, report.leaks[i].measurement.darkRoomLuminance,
-                       report.leaks[i].measurement.leakRatio());
-    json += "\n  ],\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect\",";
-    json += format(" \"reference_luminance\": %.6g, \"spread\": %.6g,\n    \"resolutions\": [", report.driftReference,
-                   spread(report.drift));
-    for (size_t i = 0; i < report.drift.size(); ++i)
-        json += format("%s\n      {\"voxels\": %u, \"luminance\": %.6g, \"finite\": %s}", i ? "," : "",
-                       report.drift[i].voxelResolution, report.drift[i].meanLuminance,
-                       report.drift[i].finite ? "true" : "false");
-    json += "\n    ]\n  },\n";
-    json += format("  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": %.6g, \"light\": %.6g}, "
-                   "\"indirect\": {\"camera\": %.6g, \"light\": %.6g}}\n}\n",
-                   report.flickerFull.cameraChange, report.flickerFull.lightChange,
-                   report.flickerIndirect.cameraChange, report.flickerIndirect.lightChange);
+    std::string json = "{\n  \"setting\": " + jsonString(report.setting) + ",\n  \"leak\": [";
+    for (size_t i = 0; i < report.leaks.size(); ++i) {
+        const FailureModeReport::Leak& leak = report.leaks[i];
+        json += std::string(i ? "," : "") + "\n    {\"wall_offset_voxels\": " + jsonNumber(leak.wallOffsetVoxels) +
+                ", \"lit_room\": " + jsonNumber(leak.measurement.litRoomLuminance) +
+                ", \"dark_room\": " + jsonNumber(leak.measurement.darkRoomLuminance) +
+                ", \"ratio\": " + jsonNumber(leak.measurement.leakRatio()) + "}";
+    }
+    json += "\n  ],\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect\", \"reference_luminance\": " +
+            jsonNumber(report.driftReference) + ", \"spread\": " + jsonNumber(spread(report.drift)) +
+            ",\n    \"resolutions\": [";
+    for (size_t i = 0; i < report.drift.size(); ++i) {
+        const ResolutionLuminance& r = report.drift[i];
+        json += std::string(i ? "," : "") + "\n      {\"voxels\": " + std::to_string(r.voxelResolution) +
+                ", \"luminance\": " + jsonNumber(r.meanLuminance) + ", \"finite\": " + (r.finite ? "true" : "false") + "}";
+    }
+    json += "\n    ]\n  },\n  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": " +
+            jsonNumber(report.flickerFull.cameraChange) + ", \"light\": " + jsonNumber(report.flickerFull.lightChange) +
+            "}, \"indirect\": {\"camera\": " + jsonNumber(report.flickerIndirect.cameraChange) +
+            ", \"light\": " + jsonNumber(report.flickerIndirect.lightChange) + "}}\n}\n";
     return json;
 }
 

@@ -8,6 +8,7 @@
 
 #include "bench/pareto.h"
 #include "bench/svg_plot.h"
+#include "io/json_text.h"
 
 namespace vct::bench {
 namespace {
@@ -17,26 +18,6 @@ std::string number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);
     return text;
-}
-
-std::string jsonNumber(double value) {
-    const std::string text = number(value);
-    return text.empty() ? "null" : text;
-}
-
-std::string jsonString(const std::string& text) {
-    std::string quoted = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') quoted += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", c);
-            quoted += escape;
-        } else {
-            quoted += c;
-        }
-    }
-    return quoted + "\"";
 }
 
 // CSV fields hold no commas or quotes except in scene paths; quote those.

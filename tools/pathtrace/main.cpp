@@ -8,6 +8,7 @@
 
 #include "error.h"
 #include "io/image_io.h"
+#include "io/json_text.h"
 #include "path_tracer.h"
 #include "scene/load.h"
 
@@ -121,22 +122,8 @@ vct::Camera chooseCamera(const vct::Scene& scene, const Options& options) {
     return camera;
 }
 
-std::string jsonString(const std::string& text) {
-    std::string quoted = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') quoted += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", c);
-            quoted += escape;
-        } else {
-            quoted += c;
-        }
-    }
-    return quoted + "\"";
-}
-
-std::string jsonNumber(double value) {
+// The sidecar's numbers; a non-finite one is written as 0 so readers always get a number.
+std::string sidecarNumber(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", std::isfinite(value) ? value : 0.0);
     return text;
@@ -165,14 +152,14 @@ int run(int argc, char** argv) {
     const pt::RenderResult result = pt::render(tracer, s);
     vct::writeImage(options.out, result.image);
     const std::string json =
-        "{\n  \"scene\": " + jsonString(options.scene) + ",\n  \"mode\": \"" + modeName(s.component) +
+        "{\n  \"scene\": " + vct::jsonString(options.scene) + ",\n  \"mode\": \"" + modeName(s.component) +
         "\",\n  \"width\": " + std::to_string(s.width) + ",\n  \"height\": " + std::to_string(s.height) +
         ",\n  \"spp\": " + std::to_string(result.samplesPerPixel) + ",\n  \"spp_requested\": " +
         std::to_string(s.samplesPerPixel) + ",\n  \"seed\": " + std::to_string(s.seed) +
-        ",\n  \"threads\": " + std::to_string(threads) + ",\n  \"seconds\": " + jsonNumber(result.seconds) +
-        ",\n  \"mean_luminance\": " + jsonNumber(result.meanLuminance) +
-        ",\n  \"mean_luminance_standard_error\": " + jsonNumber(result.meanLuminanceStandardError) +
-        ",\n  \"relative_noise\": " + jsonNumber(result.relativeNoise) +
+        ",\n  \"threads\": " + std::to_string(threads) + ",\n  \"seconds\": " + sidecarNumber(result.seconds) +
+        ",\n  \"mean_luminance\": " + sidecarNumber(result.meanLuminance) +
+        ",\n  \"mean_luminance_standard_error\": " + sidecarNumber(result.meanLuminanceStandardError) +
+        ",\n  \"relative_noise\": " + sidecarNumber(result.relativeNoise) +
         ",\n  \"discarded_samples\": " + std::to_string(result.discardedSamples) + "\n}\n";
     vct::writeFileAtomically(sidecarPath(options.out), json);
 
