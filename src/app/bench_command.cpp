@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/options.h"
 #include "app/scene_setup.h"
 #include "bench/failure_report.h"
 #include "bench/matrix.h"
@@ -22,20 +23,24 @@
 namespace vct {
 namespace {
 
-void printHelp() {
-    std::printf(
-        "usage: vct bench [options]\n\n"
-        "  --scenes A,B             built-in scenes or glTF files (default: every built-in scene)\n"
-        "  --out-dir DIR            where bench.csv, bench.json and bench.svg go (default bench-results)\n"
-        "  --preset NAME            measure just that preset (fast, balanced, quality)\n"
-        "  --quick                  two cheap settings, for tests (no failure modes)\n"
-        "  --no-failure-modes       skip the leak, resolution-drift and flicker measurements\n"
-        "  --width W --height H     image size (default 128×128, the size of the references)\n"
-        "  --frames N               measured frames per setting; medians are reported (default 3)\n"
-        "  --warmup N               frames before measuring (default 1)\n"
-        "  --reference-dir DIR      SCENE-direct.pfm and SCENE-indirect.pfm (default assets/reference)\n"
-        "  --device NAME, --validate, --gpu-timeout SECONDS   as for vct render\n");
+std::vector<Option> benchOptions() {
+    std::vector<Option> options = {
+        {"scenes", "A,B", "built-in scenes or glTF files (default: every built-in scene)"},
+        {"out-dir", "DIR", "where bench.csv, bench.json and bench.svg go (default bench-results)"},
+        {"preset", "NAME", "measure just that preset (fast, balanced, quality)"},
+        {"quick", "", "two cheap settings, for tests (no failure modes)"},
+        {"no-failure-modes", "", "skip the leak, resolution-drift and flicker measurements"},
+        {"frames", "N", "measured frames per setting; medians are reported (default 3)"},
+        {"warmup", "N", "frames before measuring (default 1)"},
+        {"reference-dir", "DIR", "SCENE-direct.pfm and SCENE-indirect.pfm (default assets/reference)"},
+    };
+    for (const char* shared : {"width", "height", "device", "validate", "gpu-timeout"})
+        options.push_back(sharedOption(shared));
+    return options;
 }
+
+// The references' size.
+RenderSettings benchDefaults() { return RenderSettings{.image = {.width = 128, .height = 128}}; }
 
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> items;
@@ -53,16 +58,14 @@ std::string sceneFileName(const std::string& scene) {
 
 int runBench(const std::vector<std::string>& rawArguments) {
     const auto start = std::chrono::steady_clock::now();
-    const Arguments arguments(rawArguments, {"help", "quick", "no-failure-modes", "validate"},
-                              {"scenes", "out-dir", "preset", "width", "height", "frames", "warmup", "reference-dir",
-                               "device", "gpu-timeout"});
+    const std::vector<Option> rows = benchOptions();
+    const Arguments arguments = parseArguments(rawArguments, rows);
     if (arguments.has("help")) {
-        printHelp();
+        std::printf("usage: vct bench [options]\n\n%s", optionsHelp(rows, benchDefaults()).c_str());
         return 0;
     }
-    RenderSettings imageSettings;
-    imageSettings.width = arguments.unsignedInt("width", 128, 1, 16384);
-    imageSettings.height = arguments.unsignedInt("height", 128, 1, 16384);
+    // Only the image size comes from the options: the matrix sets everything else.
+    const RenderSettings imageSettings = renderSettingsFromArguments(arguments, rows, benchDefaults());
     const std::vector<bench::BenchSetting> matrix =
         arguments.has("preset") ? bench::presetMatrix(arguments.text("preset", ""), imageSettings)
         : arguments.has("quick") ? bench::quickMatrix(imageSettings)
@@ -83,12 +86,12 @@ int runBench(const std::vector<std::string>& rawArguments) {
     context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
     bench::RunInfo info;
     info.device = context.deviceName();
-    info.width = imageSettings.width;
-    info.height = imageSettings.height;
+    info.width = imageSettings.image.width;
+    info.height = imageSettings.image.height;
     info.frames = options.frames;
     info.warmupFrames = options.warmupFrames;
     std::printf("vct bench: %zu settings × %zu scenes at %ux%u on %s\n", matrix.size(), scenes.size(),
-                imageSettings.width, imageSettings.height, info.device.c_str());
+                imageSettings.image.width, imageSettings.image.height, info.device.c_str());
 
     options.onMeasured = [](const bench::Measurement& m) {
         std::printf("  %-16s %-30s %8.1f ms static %8.1f ms light", m.scene.c_str(), m.setting.label.c_str(),
@@ -106,11 +109,11 @@ int runBench(const std::vector<std::string>& rawArguments) {
         for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
         if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
         const std::optional<bench::References> references =
-            bench::loadReferences(referenceDir, sceneFileName(name), imageSettings.width, imageSettings.height);
+            bench::loadReferences(referenceDir, sceneFileName(name), imageSettings.image.width, imageSettings.image.height);
         if (references) info.references[scene.name] = *references;
         if (references && name == "cornell") cornellReferences = references;
         else std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
-                         imageSettings.width, imageSettings.height, referenceDir.c_str());
+                         imageSettings.image.width, imageSettings.image.height, referenceDir.c_str());
         for (bench::Measurement& m :
              bench::measureScene(context, scene, matrix, references ? &*references : nullptr, options)) {
             m.fullImage = {};  // not kept: only the numbers are written
@@ -132,8 +135,8 @@ int runBench(const std::vector<std::string>& rawArguments) {
         const std::string presetName = arguments.text("preset", "balanced");
         const std::optional<RenderSettings> preset = findRenderPreset(presetName);
         RenderSettings settings = preset ? *preset : RenderSettings{};
-        settings.width = imageSettings.width;
-        settings.height = imageSettings.height;
+        settings.image.width = imageSettings.image.width;
+        settings.image.height = imageSettings.image.height;
         const bench::FailureModeReport report =
             bench::measureFailureModes(context, settings, cornellReferences ? &cornellReferences->indirect : nullptr);
         writeFileAtomically(outDir + "/failure_modes.json", bench::failureModesJson(report));

@@ -3,28 +3,30 @@
 #include <cstdio>
 
 #include "app/commands.h"
+#include "app/options.h"
 #include "app/scene_setup.h"
 #include "error.h"
 #include "render/renderer.h"
 
 namespace vct {
 
-static void printHelp() {
-    std::printf("usage: vct render --out FILE.pfm|FILE.png [options]\n\n%s"
-                "  --exposure F             PNG only: radiance multiplier before tone mapping (default 1)\n"
-                "  --frames N               render N frames, keep the last (default 1)\n",
-                sceneOptionsHelp().c_str());
+static std::vector<Option> renderOptions() {
+    std::vector<Option> options = {
+        {"out", "FILE.pfm|FILE.png", "linear radiance (.pfm) or a tone-mapped sRGB image (.png)"},
+        {"exposure", "F", "PNG only: radiance multiplier before tone mapping (default 1)"},
+        {"frames", "N", "render N frames, keep the last (default 1)"},
+    };
+    options.insert(options.end(), sharedOptions().begin(), sharedOptions().end());
+    return options;
 }
 
 int runRender(const std::vector<std::string>& rawArguments) {
     const auto start = std::chrono::steady_clock::now();
-    std::set<std::string> flags = sceneFlagNames();
-    flags.insert("help");
-    std::set<std::string> valued = sceneOptionNames();
-    valued.insert({"out", "exposure", "frames"});
-    const Arguments arguments(rawArguments, flags, valued);
+    const std::vector<Option> options = renderOptions();
+    const Arguments arguments = parseArguments(rawArguments, options);
     if (arguments.has("help")) {
-        printHelp();
+        std::printf("usage: vct render --out FILE.pfm|FILE.png [options]\n\n%s",
+                    optionsHelp(options, RenderSettings{}).c_str());
         return 0;
     }
     if (!arguments.has("out")) throw Error("render needs --out FILE.pfm or FILE.png");
@@ -33,7 +35,7 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const uint32_t frames = arguments.unsignedInt("frames", 1, 1, 100000);
 
     const Scene scene = loadSceneFromArguments(arguments);
-    const RenderSettings settings = renderSettingsFromArguments(arguments);
+    const RenderSettings settings = renderSettingsFromArguments(arguments, options);
     GpuContext context(contextOptionsFromArguments(arguments));
     context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
     std::printf("scene %s: %zu triangles, %zu lights, on %s\n", scene.name.c_str(), scene.triangleCount(),
@@ -49,7 +51,7 @@ int runRender(const std::vector<std::string>& rawArguments) {
     for (const std::string& pass : stats.skipped) std::printf("  %-10s  skipped\n", pass.c_str());
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width,
-                image.height, renderModeName(settings.mode), total, stats.gpuMilliseconds());
+                image.height, renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());
     if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
     return 0;
 }

@@ -1,4 +1,4 @@
-// Options shared by `render`, `view` and `bench`: which scene, which device, which camera and light.
+// What the shared options (app/options.h) say of the scene, the device, the camera and the light.
 #pragma once
 
 #include <set>
@@ -11,14 +11,8 @@
 
 namespace vct {
 
-// Option names understood by the functions below.
-std::set<std::string> sceneOptionNames();
-std::set<std::string> sceneFlagNames();
-std::string sceneOptionsHelp();
-
 Scene loadSceneFromArguments(const Arguments& arguments);
 ContextOptions contextOptionsFromArguments(const Arguments& arguments);
-RenderSettings renderSettingsFromArguments(const Arguments& arguments);
 
 // --camera-pos/--camera-target/--fov and --light-dir/--light-intensity applied to the scene.
 void applyCameraAndLightOverrides(const Arguments& arguments, Scene& scene);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/options.h"
 #include "app/scene_setup.h"
 #include "error.h"
 
@@ -22,22 +23,30 @@ int runView(const std::vector<std::string>&) {
 
 #else
 
-static void printHelp() {
-    std::printf("usage: vct view [options]\n\n%s"
-                "  --exposure F             radiance multiplier before tone mapping (default 1)\n"
-                "  --no-vsync               present as fast as possible (MAILBOX or IMMEDIATE when offered)\n"
-                "  --screenshot FILE.png    save the image shown on the last of --frames and exit\n"
-                "  --frames N               with --screenshot: frames to draw first (default 1)\n"
-                "  --screenshot-ui          the screenshot includes the panels\n"
-                "  --no-guide               start without the usage guide\n"
-                "  --events TEXT            scripted input, e.g. \"2 key W down; 5 key W up\" (see src/view/input.h)\n"
-                "  --script FILE            the same, read from a file\n"
-                "  --render-scale 1|0.5|0.25   image size relative to the window (default 1; 0.5 on a\n"
-                "                           software rasterizer such as lavapipe)\n"
-                "  --render-every-frame     redraw even when nothing changed (for measuring)\n"
-                "\nThe window's default size is 960x540, one sample per pixel and a 2048 sun shadow map;\n"
-                "press F1 in the window for the controls.\n",
-                sceneOptionsHelp().c_str());
+static std::vector<Option> viewOptions() {
+    std::vector<Option> options = {
+        {"exposure", "F", "radiance multiplier before tone mapping (default 1)"},
+        {"no-vsync", "", "present as fast as possible (MAILBOX or IMMEDIATE when offered)"},
+        {"screenshot", "FILE.png", "save the image shown on the last of --frames and exit"},
+        {"frames", "N", "with --screenshot: frames to draw first (default 1)"},
+        {"screenshot-ui", "", "the screenshot includes the panels"},
+        {"no-guide", "", "start without the usage guide"},
+        {"events", "TEXT", "scripted input, e.g. \"2 key W down; 5 key W up\" (see src/view/input.h)"},
+        {"script", "FILE", "the same, read from a file"},
+        {"render-scale", "1|0.5|0.25", "image size relative to the window (default 1; 0.5 on a software rasterizer)"},
+        {"render-every-frame", "", "redraw even when nothing changed (for measuring)"},
+    };
+    options.insert(options.end(), sharedOptions().begin(), sharedOptions().end());
+    return options;
+}
+
+// Interactive defaults where `render` aims at accuracy: a window-sized image, one sample per
+// pixel, a smaller sun shadow map. Explicit options (and a preset's resources) win.
+static RenderSettings viewDefaults() {
+    RenderSettings settings;
+    settings.image = {.width = 960, .height = 540, .supersample = 1};
+    settings.resources.sunShadowMapSize = 2048;
+    return settings;
 }
 
 static std::string readTextFile(const std::string& path) {
@@ -49,23 +58,21 @@ static std::string readTextFile(const std::string& path) {
 }
 
 int runView(const std::vector<std::string>& rawArguments) {
-    std::set<std::string> flags = sceneFlagNames();
-    flags.insert({"help", "no-vsync", "screenshot-ui", "no-guide", "render-every-frame"});
-    std::set<std::string> valued = sceneOptionNames();
-    valued.insert({"exposure", "screenshot", "frames", "events", "script", "render-scale"});
-    const Arguments arguments(rawArguments, flags, valued);
+    const std::vector<Option> rows = viewOptions();
+    const Arguments arguments = parseArguments(rawArguments, rows);
     if (arguments.has("help")) {
-        printHelp();
+        std::printf("usage: vct view [options]\n\n%s\npress F1 in the window for the controls.\n",
+                    optionsHelp(rows, viewDefaults()).c_str());
         return 0;
     }
     ViewerOptions options;
-    options.settings = renderSettingsFromArguments(arguments);
-    // Interactive defaults where `render` aims at accuracy: a window-sized image, one sample per
-    // pixel, a smaller sun shadow map. Explicit options win.
-    if (!arguments.has("width")) options.settings.width = 960;
-    if (!arguments.has("height")) options.settings.height = 540;
-    if (!arguments.has("supersample")) options.settings.supersample = 1;
-    if (!arguments.has("shadow-map")) options.settings.sunShadowMapSize = 2048;
+    options.settings = renderSettingsFromArguments(arguments, rows, viewDefaults());
+    // A preset sets every setting; the window still decides the image's size and sampling.
+    const RenderSettings defaults = viewDefaults();
+    if (!arguments.has("width")) options.settings.image.width = defaults.image.width;
+    if (!arguments.has("height")) options.settings.image.height = defaults.image.height;
+    if (!arguments.has("supersample")) options.settings.image.supersample = defaults.image.supersample;
+    if (!arguments.has("shadow-map")) options.settings.resources.sunShadowMapSize = defaults.resources.sunShadowMapSize;
     options.exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
     options.vsync = !arguments.has("no-vsync");
     options.showGuide = !arguments.has("no-guide");

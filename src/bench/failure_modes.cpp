@@ -105,7 +105,7 @@ std::vector<ResolutionLuminance> measureResolutionDrift(GpuContext& context, con
                                                         const std::vector<uint32_t>& resolutions) {
     std::vector<ResolutionLuminance> results;
     for (uint32_t resolution : resolutions) {
-        settings.voxelResolution = resolution;
+        settings.resources.voxelResolution = resolution;
         Renderer renderer(context, scene, settings);
         renderer.renderFrame();
         const Image image = renderer.readImage();

@@ -39,7 +39,7 @@ struct LeakMeasurement {
 };
 LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX);
 
-// ---- Brightness against voxel resolution: the mean luminance of `settings.mode` (e.g. indirect)
+// ---- Brightness against voxel resolution: the mean luminance of `settings.shading.mode` (e.g. indirect)
 // for each resolution, all else equal.
 struct ResolutionLuminance {
     uint32_t voxelResolution = 0;

@@ -37,13 +37,13 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     report.setting = settingLabel(settings);
 
     // The two rooms span 2 m along x, so the fitted grid's voxel is 2 m / (resolution − 2).
-    const float voxel = fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.voxelResolution).originVoxelSize.w;
+    const float voxel = fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.resources.voxelResolution).originVoxelSize.w;
     for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
         report.leaks.push_back({offset, measureLightLeak(context, settings, offset * voxel)});
 
     const Scene cornell = loadScene("cornell");
     RenderSettings indirect = settings;
-    indirect.mode = RenderMode::Indirect;
+    indirect.shading.mode = RenderMode::Indirect;
     report.drift = measureResolutionDrift(context, cornell, indirect, {32, 64, 128, 256});
     if (cornellIndirectReference) report.driftReference = meanLuminance(*cornellIndirectReference);
 

@@ -9,22 +9,16 @@ namespace vct::bench {
 namespace {
 
 RenderSettings withImage(RenderSettings settings, const RenderSettings& imageSettings) {
-    settings.width = imageSettings.width;
-    settings.height = imageSettings.height;
-    settings.mode = RenderMode::Full;
+    settings.image.width = imageSettings.image.width;
+    settings.image.height = imageSettings.image.height;
+    settings.shading.mode = RenderMode::Full;
     return settings;
 }
 
-struct Variant {
-    uint32_t voxels;
-    uint32_t cones;
-    float aperture;
-    float step;
-    bool anisotropic;
-    uint32_t bounces;
-    uint32_t supersample = 1;
-    uint32_t sunShadowMapSize = 2048;
-};
+// A matrix entry: what differs from the renderer's defaults, at one sample per pixel.
+RenderSettings variant(const ResourceSettings& resources, const ShadingSettings& shading, uint32_t supersample = 1) {
+    return RenderSettings{.image = {.supersample = supersample}, .resources = resources, .shading = shading};
+}
 
 // Adds the presets: a preset equal to a matrix setting marks that setting instead of adding one.
 void addPresets(std::vector<BenchSetting>& matrix, const RenderSettings& imageSettings) {
@@ -32,7 +26,7 @@ void addPresets(std::vector<BenchSetting>& matrix, const RenderSettings& imageSe
         const RenderSettings settings = withImage(presetSettings, imageSettings);
         bool found = false;
         for (BenchSetting& existing : matrix) {
-            if (existing.preset.empty() && sameMeasuredSettings(existing.settings, settings)) {
+            if (existing.preset.empty() && existing.settings == settings) {
                 existing.preset = name;
                 found = true;
                 break;
@@ -46,67 +40,63 @@ void addPresets(std::vector<BenchSetting>& matrix, const RenderSettings& imageSe
 
 std::string settingLabel(const RenderSettings& s) {
     char text[128];
-    std::snprintf(text, sizeof text, "v%u c%u a%g s%g %s b%u", s.voxelResolution, s.diffuseConeCount,
-                  double(s.diffuseConeAperture), double(s.coneStep), s.anisotropicVoxels ? "aniso" : "iso", s.bounces);
+    std::snprintf(text, sizeof text, "v%u c%u a%g s%g %s b%u", s.resources.voxelResolution, s.shading.diffuseConeCount,
+                  double(s.shading.diffuseConeAperture), double(s.shading.coneStep), s.resources.anisotropicVoxels ? "aniso" : "iso", s.resources.bounces);
     std::string label = text;
-    if (s.supersample != 1) label += " ss" + std::to_string(s.supersample);
-    if (s.sunShadowMapSize != 2048) label += " sm" + std::to_string(s.sunShadowMapSize);
+    if (s.image.supersample != 1) label += " ss" + std::to_string(s.image.supersample);
+    if (s.resources.sunShadowMapSize != 2048) label += " sm" + std::to_string(s.resources.sunShadowMapSize);
     return label;
 }
 
 std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {
     // The base: the renderer's defaults at one sample per pixel and a 2048² sun shadow map, 64³.
-    RenderSettings base;
-    base.supersample = 1;
-    base.sunShadowMapSize = 2048;
     // Not the full product of {32,64,128} × {1,6,9} cones × {40°,60°} × {0.5,1} × mips × bounces
     // (144 settings): each axis alone around the base, then the combinations the front suggested
     // in a first run (narrow cones, cheap grids), and what supersampling and a finer sun shadow map
     // do to direct light. Two bounces only at 64³: at 128³ one light change costs seconds. 9 cones
     // of 40° measured the same as 6 at 64³, so only 128³ has them.
-    const std::vector<Variant> variants = {
-        {64, 6, 60, 0.5f, true, 1},  // the base
-        {32, 6, 60, 0.5f, true, 1},  {128, 6, 60, 0.5f, true, 1},                                   // voxels
-        {64, 1, 60, 0.5f, true, 1},  {64, 6, 40, 0.5f, true, 1},                                   // cones
-        {64, 6, 60, 1.0f, true, 1},                                                                // step
-        {64, 6, 60, 0.5f, false, 1}, {64, 6, 60, 0.5f, true, 2},                                    // mips, bounces
-        {32, 1, 60, 1.0f, true, 1},  {32, 1, 40, 1.0f, true, 1},   {32, 6, 40, 0.5f, true, 1},
-        {64, 1, 40, 0.5f, true, 1},  {128, 9, 40, 0.5f, true, 1},
-        {64, 6, 40, 0.5f, true, 1, 2},  {64, 6, 40, 0.5f, true, 1, 1, 4096},  // 2×2 samples; shadow map
+    const uint32_t sun = 2048;
+    const std::vector<RenderSettings> variants = {
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {}),  // the base
+        // voxels
+        variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {}),
+        variant({.voxelResolution = 128, .sunShadowMapSize = sun}, {}),
+        // cones
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeCount = 1}),
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}),
+        // step
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.coneStep = 1.0f}),
+        // mips, bounces
+        variant({.voxelResolution = 64, .anisotropicVoxels = false, .sunShadowMapSize = sun}, {}),
+        variant({.voxelResolution = 64, .bounces = 2, .sunShadowMapSize = sun}, {}),
+        // combinations
+        variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeCount = 1, .coneStep = 1.0f}),
+        variant({.voxelResolution = 32, .sunShadowMapSize = sun},
+                {.diffuseConeCount = 1, .diffuseConeAperture = 40.0f, .coneStep = 1.0f}),
+        variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}),
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeCount = 1, .diffuseConeAperture = 40.0f}),
+        variant({.voxelResolution = 128, .sunShadowMapSize = sun}, {.diffuseConeCount = 9, .diffuseConeAperture = 40.0f}),
+        // 2×2 samples; a finer sun shadow map
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}, 2),
+        variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}),
     };
     std::vector<BenchSetting> matrix;
-    for (const Variant& v : variants) {
-        RenderSettings settings = base;
-        settings.voxelResolution = v.voxels;
-        settings.diffuseConeCount = v.cones;
-        settings.diffuseConeAperture = v.aperture;
-        settings.coneStep = v.step;
-        settings.anisotropicVoxels = v.anisotropic;
-        settings.bounces = v.bounces;
-        settings.supersample = v.supersample;
-        settings.sunShadowMapSize = v.sunShadowMapSize;
-        settings = withImage(settings, imageSettings);
-        matrix.push_back({settingLabel(settings), "", settings});
+    for (const RenderSettings& settings : variants) {
+        const RenderSettings sized = withImage(settings, imageSettings);
+        matrix.push_back({settingLabel(sized), "", sized});
     }
     addPresets(matrix, imageSettings);
     return matrix;
 }
 
 std::vector<BenchSetting> quickMatrix(const RenderSettings& imageSettings) {
-    RenderSettings settings;
-    settings.supersample = 1;
-    settings.sunShadowMapSize = 512;
-    settings.localShadowMapSize = 256;
-    settings.voxelResolution = 32;
-    settings.diffuseConeCount = 1;
-    settings.coneStep = 1.0f;
-    std::vector<BenchSetting> matrix;
-    settings = withImage(settings, imageSettings);
-    matrix.push_back({settingLabel(settings), "", settings});
-    settings.diffuseConeCount = 6;
-    settings.anisotropicVoxels = false;
-    matrix.push_back({settingLabel(settings), "", settings});
-    return matrix;
+    const ResourceSettings small{.voxelResolution = 32, .sunShadowMapSize = 512, .localShadowMapSize = 256};
+    const RenderSettings oneCone = withImage(variant(small, {.diffuseConeCount = 1, .coneStep = 1.0f}), imageSettings);
+    const RenderSettings sixIsotropic = withImage(
+        variant({.voxelResolution = 32, .anisotropicVoxels = false, .sunShadowMapSize = 512, .localShadowMapSize = 256},
+                {.diffuseConeCount = 6, .coneStep = 1.0f}),
+        imageSettings);
+    return {{settingLabel(oneCone), "", oneCone}, {settingLabel(sixIsotropic), "", sixIsotropic}};
 }
 
 std::vector<BenchSetting> presetMatrix(const std::string& name, const RenderSettings& imageSettings) {
@@ -122,20 +112,7 @@ std::vector<BenchSetting> presetMatrix(const std::string& name, const RenderSett
 }
 
 bool sameRenderer(const RenderSettings& a, const RenderSettings& b) {
-    return a.width == b.width && a.height == b.height && a.supersample == b.supersample &&
-           a.voxelResolution == b.voxelResolution && a.anisotropicVoxels == b.anisotropicVoxels &&
-           a.bounces == b.bounces && a.sunShadowMapSize == b.sunShadowMapSize &&
-           a.localShadowMapSize == b.localShadowMapSize;
-}
-
-bool sameMeasuredSettings(const RenderSettings& a, const RenderSettings& b) {
-    return sameRenderer(a, b) && a.diffuseConeCount == b.diffuseConeCount &&
-           a.diffuseConeAperture == b.diffuseConeAperture && a.diffuseCentreWeight == b.diffuseCentreWeight &&
-           a.coneStep == b.coneStep && a.coneMaxDistance == b.coneMaxDistance &&
-           a.coneStartOffset == b.coneStartOffset && a.coneStopOpacity == b.coneStopOpacity &&
-           a.skipEmptySpace == b.skipEmptySpace && a.ambientFactor == b.ambientFactor &&
-           a.shadowNormalOffset == b.shadowNormalOffset && a.shadowSlopeBias == b.shadowSlopeBias &&
-           a.pcfRadius == b.pcfRadius;
+    return a.image == b.image && a.resources == b.resources;
 }
 
 }  // namespace vct::bench

@@ -26,9 +26,6 @@ std::vector<BenchSetting> quickMatrix(const RenderSettings& imageSettings);
 // Just the preset `name`; throws vct::Error naming the presets when there is none by that name.
 std::vector<BenchSetting> presetMatrix(const std::string& name, const RenderSettings& imageSettings);
 
-// True when two settings render the same image at the same cost (everything but image size equal
-// in the fields the benchmark varies or a preset sets).
-bool sameMeasuredSettings(const RenderSettings& a, const RenderSettings& b);
 // True when `b` can reuse a Renderer made for `a` (same voxels, mips, bounces, shadow maps, size).
 bool sameRenderer(const RenderSettings& a, const RenderSettings& b);
 

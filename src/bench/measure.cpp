@@ -115,9 +115,9 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene, c
         m.setting = setting;
         m.voxelizeMilliseconds = voxelizeMilliseconds;
 
-        RenderSettings shading = setting.settings;
+        ShadingSettings shading = setting.settings.shading;
         shading.mode = RenderMode::Full;
-        renderer->setShadingSettings(shading);
+        renderer->setShading(shading);
         // Light changes first: the first one also re-lights the voxels with this setting's cones
         // (a second bounce gathers with them), so the static frames after it show this setting.
         std::vector<FrameStats> frames;
@@ -134,15 +134,15 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene, c
         m.deviceMemoryBytes = renderer->deviceMemoryBytes();
 
         shading.mode = RenderMode::Direct;
-        renderer->setShadingSettings(shading);
+        renderer->setShading(shading);
         renderer->renderFrame();
         const Image direct = renderer->readImage();
         shading.mode = RenderMode::Indirect;
-        renderer->setShadingSettings(shading);
+        renderer->setShading(shading);
         renderer->renderFrame();
         const Image indirect = renderer->readImage();
         shading.mode = RenderMode::Full;
-        renderer->setShadingSettings(shading);
+        renderer->setShading(shading);
 
         m.imagesFinite = finite(m.fullImage) && finite(direct) && finite(indirect);
         if (references) {

@@ -122,10 +122,10 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
     csv << "\n";
     for (const Measurement& m : measurements) {
         const RenderSettings& s = m.setting.settings;
-        csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << "," << s.voxelResolution << ","
-            << s.diffuseConeCount << "," << number(s.diffuseConeAperture) << "," << number(s.coneStep) << ","
-            << (s.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << s.bounces << "," << s.supersample << ","
-            << s.sunShadowMapSize << "," << number(m.staticFrame.gpuMilliseconds) << ","
+        csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << "," << s.resources.voxelResolution << ","
+            << s.shading.diffuseConeCount << "," << number(s.shading.diffuseConeAperture) << "," << number(s.shading.coneStep) << ","
+            << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << s.resources.bounces << "," << s.image.supersample << ","
+            << s.resources.sunShadowMapSize << "," << number(m.staticFrame.gpuMilliseconds) << ","
             << number(m.staticFrame.cpuMilliseconds) << "," << number(m.lightChangeFrame.gpuMilliseconds) << ","
             << number(m.lightChangeFrame.cpuMilliseconds) << "," << number(m.voxelizeMilliseconds) << ","
             << number(m.lightChangeFrame.gpuMilliseconds + m.voxelizeMilliseconds) << ","
@@ -166,10 +166,10 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
         const RenderSettings& s = m.setting.settings;
         json << (i ? ",\n    " : "\n    ") << "{\"scene\": " << jsonString(m.scene)
              << ", \"setting\": " << jsonString(m.setting.label) << ", \"preset\": " << jsonString(m.setting.preset)
-             << ",\n     \"settings\": {\"voxels\": " << s.voxelResolution << ", \"cones\": " << s.diffuseConeCount
-             << ", \"aperture_deg\": " << jsonNumber(s.diffuseConeAperture) << ", \"step\": " << jsonNumber(s.coneStep)
-             << ", \"anisotropic\": " << (s.anisotropicVoxels ? "true" : "false") << ", \"bounces\": " << s.bounces
-             << ", \"supersample\": " << s.supersample << ", \"sun_shadow_map\": " << s.sunShadowMapSize
+             << ",\n     \"settings\": {\"voxels\": " << s.resources.voxelResolution << ", \"cones\": " << s.shading.diffuseConeCount
+             << ", \"aperture_deg\": " << jsonNumber(s.shading.diffuseConeAperture) << ", \"step\": " << jsonNumber(s.shading.coneStep)
+             << ", \"anisotropic\": " << (s.resources.anisotropicVoxels ? "true" : "false") << ", \"bounces\": " << s.resources.bounces
+             << ", \"supersample\": " << s.image.supersample << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
              << "},\n     \"static\": " << jsonTiming(m.staticFrame)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
              << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds)

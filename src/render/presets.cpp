@@ -10,33 +10,27 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
 
     // One 40° cone along the normal at 32³ with long steps: a sixth of `balanced`'s time for
     // 1.3× its error.
-    RenderSettings fast;
-    fast.supersample = 1;
-    fast.voxelResolution = 32;
-    fast.sunShadowMapSize = 2048;
-    fast.diffuseConeCount = 1;
-    fast.diffuseConeAperture = 40.0f;
-    fast.coneStep = 1.0f;
+    const RenderSettings fast{
+        .image = {.supersample = 1},
+        .resources = {.voxelResolution = 32, .sunShadowMapSize = 2048},
+        .shading = {.diffuseConeCount = 1, .diffuseConeAperture = 40.0f, .coneStep = 1.0f},
+    };
 
     // 6 cones of 40° at 64³, with a 4096² sun shadow map: it costs a static frame nothing (shadow
     // maps are redrawn only when a light changes), 47 MB more, and sharpens the sun's shadows.
-    RenderSettings balanced;
-    balanced.supersample = 1;
-    balanced.voxelResolution = 64;
-    balanced.sunShadowMapSize = 4096;
-    balanced.diffuseConeCount = 6;
-    balanced.diffuseConeAperture = 40.0f;
-    balanced.coneStep = 0.5f;
+    const RenderSettings balanced{
+        .image = {.supersample = 1},
+        .resources = {.voxelResolution = 64, .sunShadowMapSize = 4096},
+        .shading = {.diffuseConeCount = 6, .diffuseConeAperture = 40.0f, .coneStep = 0.5f},
+    };
 
     // `balanced`'s cones with 2×2 supersampling: the lowest error measured, most of the gain in
     // direct light (edges of shadows and of the sun's patch), at about 4× the time.
-    RenderSettings quality;
-    quality.supersample = 2;
-    quality.voxelResolution = 64;
-    quality.sunShadowMapSize = 2048;
-    quality.diffuseConeCount = 6;
-    quality.diffuseConeAperture = 40.0f;
-    quality.coneStep = 0.5f;
+    const RenderSettings quality{
+        .image = {.supersample = 2},
+        .resources = {.voxelResolution = 64, .sunShadowMapSize = 2048},
+        .shading = {.diffuseConeCount = 6, .diffuseConeAperture = 40.0f, .coneStep = 0.5f},
+    };
 
     return {{"fast", fast}, {"balanced", balanced}, {"quality", quality}};
 }

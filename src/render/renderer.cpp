@@ -25,19 +25,6 @@ bool FrameStats::ran(const std::string& pass) const {
     return false;
 }
 
-static uint32_t componentFlags(const RenderSettings& settings) {
-    const Components shown = effectiveComponents(settings);
-    uint32_t flags = 0;
-    if (shown.directDiffuse) flags |= glsl::SHOW_DIRECT_DIFFUSE;
-    if (shown.directSpecular) flags |= glsl::SHOW_DIRECT_SPECULAR;
-    if (shown.indirectDiffuse) flags |= glsl::SHOW_INDIRECT_DIFFUSE;
-    if (shown.indirectSpecular) flags |= glsl::SHOW_INDIRECT_SPECULAR;
-    if (shown.ambientOcclusion) flags |= glsl::SHOW_AMBIENT_OCCLUSION;
-    if (shown.emission) flags |= glsl::SHOW_EMISSION;
-    if (shown.shadows) flags |= glsl::USE_SHADOWS;
-    return flags;
-}
-
 // Host-visible buffers sized for `count` elements of T (at least one: Vulkan forbids empty buffers).
 template <typename T>
 static Buffer hostArray(GpuContext& context, size_t count, VkBufferUsageFlags usage) {
@@ -58,7 +45,7 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-      injectPass_(context, settings.voxelResolution, settings.anisotropicVoxels, settings.bounces),
+      injectPass_(context, settings.resources.voxelResolution, settings.resources.anisotropicVoxels, settings.resources.bounces),
       mipsPass_(context),
       timer_(context) {
     setGeometry(scene);
@@ -75,25 +62,25 @@ void Renderer::setGeometry(const Scene& scene) {
     Scene local = scene;
     for (Vertex& vertex : local.vertices) vertex.position -= sceneOrigin_;
     sceneBounds_ = local.bounds();
-    grid_ = fitVoxelGrid(sceneBounds_, settings_.voxelResolution);
+    grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     brightestEmission_ = 0.0f;
     for (const Material& material : scene.materials)
         brightestEmission_ = std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
     sceneGpu_ = std::make_unique<SceneGpu>(context_, local);
     voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
-    resize(settings_.width, settings_.height);  // the G-buffer pipeline depends on the scene's textures
+    resize(settings_.image);  // the G-buffer pipeline depends on the scene's textures
     voxelsDirty_ = true;
     if (shadowPass_) setLights(lights_);  // shadow views are fitted to the scene's bounds
 }
 
-void Renderer::resize(uint32_t width, uint32_t height) {
+void Renderer::resize(const ImageSettings& image) {
     if (gbufferPass_) vkDeviceWaitIdle(context_.device);
-    settings_.width = width;
-    settings_.height = height;
-    const uint32_t samplesWide = width * settings_.supersample, samplesHigh = height * settings_.supersample;
+    settings_.image = image;
+    const uint32_t width = image.width, height = image.height;
+    const uint32_t samplesWide = width * image.supersample, samplesHigh = height * image.supersample;
     gbufferPass_ = std::make_unique<GBufferPass>(context_, *sceneGpu_, samplesWide, samplesHigh);
     shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
-    resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.supersample);
+    resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.image.supersample);
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
@@ -129,26 +116,9 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     radianceDirty_ = true;
 }
 
-void Renderer::setShadingSettings(const RenderSettings& settings) {
-    const bool shadowChange = settings.shadowSlopeBias != settings_.shadowSlopeBias;
-    settings_.mode = settings.mode;
-    settings_.components = settings.components;
-    settings_.ambientFactor = settings.ambientFactor;
-    settings_.shadowNormalOffset = settings.shadowNormalOffset;
-    settings_.pcfRadius = settings.pcfRadius;
-    settings_.shadowSlopeBias = settings.shadowSlopeBias;
-    settings_.diffuseConeCount = settings.diffuseConeCount;
-    settings_.diffuseConeAperture = settings.diffuseConeAperture;
-    settings_.diffuseCentreWeight = settings.diffuseCentreWeight;
-    settings_.coneStep = settings.coneStep;
-    settings_.coneMaxDistance = settings.coneMaxDistance;
-    settings_.coneStartOffset = settings.coneStartOffset;
-    settings_.coneStopOpacity = settings.coneStopOpacity;
-    settings_.aoFalloff = settings.aoFalloff;
-    settings_.skipEmptySpace = settings.skipEmptySpace;
-    settings_.debugView = settings.debugView;
-    settings_.debugVoxelMip = settings.debugVoxelMip;
-    if (shadowChange) shadowsDirty_ = true;
+void Renderer::setShading(const ShadingSettings& shading) {
+    if (shading.shadowSlopeBias != settings_.shading.shadowSlopeBias) shadowsDirty_ = true;
+    settings_.shading = shading;
 }
 
 void Renderer::writeFrameConstants() {
@@ -160,17 +130,17 @@ void Renderer::writeFrameConstants() {
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
     constants.cameraPosition = glm::vec4(local.position, 1.0f);
     constants.counts = glm::uvec4(uint32_t(shadowLayout_.lights.size()), uint32_t(shadowLayout_.views.size()),
-                                  componentFlags(settings_), settings_.anisotropicVoxels ? 1u : 0u);
-    constants.shading = glm::vec4(settings_.ambientFactor, settings_.shadowNormalOffset, settings_.pcfRadius, 0.0f);
+                                  componentFlags(effectiveComponents(settings_.shading)), settings_.resources.anisotropicVoxels ? 1u : 0u);
+    constants.shading = glm::vec4(settings_.shading.ambientFactor, settings_.shading.shadowNormalOffset, settings_.shading.pcfRadius, 0.0f);
     constants.renderSize = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
     const float resolution = float(grid_.resolution.x);
     constants.grid = grid_;
-    constants.cone = glm::vec4(std::tan(glm::radians(0.5f * settings_.diffuseConeAperture)), settings_.coneStep,
-                               settings_.coneMaxDistance * resolution, settings_.coneStartOffset);
-    constants.coneWeights = glm::vec4(settings_.aoFalloff / resolution, settings_.coneStopOpacity,
-                                      settings_.diffuseCentreWeight, radianceScale_);
-    constants.coneCounts = glm::uvec4(settings_.diffuseConeCount, settings_.skipEmptySpace ? 1u : 0u,
-                                      uint32_t(settings_.debugView), settings_.debugVoxelMip);
+    constants.cone = glm::vec4(std::tan(glm::radians(0.5f * settings_.shading.diffuseConeAperture)), settings_.shading.coneStep,
+                               settings_.shading.coneMaxDistance * resolution, settings_.shading.coneStartOffset);
+    constants.coneWeights = glm::vec4(settings_.shading.aoFalloff / resolution, settings_.shading.coneStopOpacity,
+                                      settings_.shading.diffuseCentreWeight, radianceScale_);
+    constants.coneCounts = glm::uvec4(settings_.shading.diffuseConeCount, settings_.shading.skipEmptySpace ? 1u : 0u,
+                                      uint32_t(settings_.shading.debugView), settings_.shading.debugVoxelMip);
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
 }
 
@@ -179,10 +149,7 @@ FrameStats Renderer::renderFrame() {
     FrameStats stats;
     writeFrameConstants();
     const bool drawShadows = shadowsDirty_;
-    const Components shown = effectiveComponents(settings_);
-    const bool needsVoxels = shown.indirectDiffuse || shown.indirectSpecular ||
-                             (shown.ambientOcclusion && settings_.ambientFactor > 0.0f) ||
-                             settings_.debugView >= DebugView::AmbientOcclusion;
+    const bool needsVoxels = vct::needsVoxels(settings_.shading);
     const bool voxelize = needsVoxels && voxelsDirty_;
     const bool inject = needsVoxels && (radianceDirty_ || voxelize);
     submitAndWait(context_, [&](VkCommandBuffer commands) {
@@ -206,7 +173,7 @@ FrameStats Renderer::renderFrame() {
             mipsPass_.record(commands, injectPass_.radiance);
             mipsPass_.recordDirectional(commands, injectPass_.radiance, injectPass_.directional);
             timer_.end(commands);
-            if (settings_.bounces >= 2) {
+            if (settings_.resources.bounces >= 2) {
                 timer_.begin(commands, "bounce");
                 injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
                                          shadowViewsBuffer_.buffer, *shadowPass_, *voxelizePass_);

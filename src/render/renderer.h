@@ -51,12 +51,12 @@ public:
     void setGeometry(const Scene& scene);
     const std::vector<Light>& lights() const { return lights_; }
     const RenderSettings& settings() const { return settings_; }
-    // Changes that need no new images or voxels: mode, components, ambient, shadow filtering,
-    // cone parameters, debug views. (Image size, voxel and shadow-map resolution need a new Renderer.)
-    void setShadingSettings(const RenderSettings& settings);
+    // Changes that need no new images or voxels (a new image size is resize(); new resources
+    // need a new Renderer).
+    void setShading(const ShadingSettings& shading);
 
-    // A new image size (a resized window): only the image-sized passes are rebuilt.
-    void resize(uint32_t width, uint32_t height);
+    // A new image size or supersampling (a resized window): only the image-sized passes are rebuilt.
+    void resize(const ImageSettings& image);
 
     // Records, submits and waits for one frame.
     FrameStats renderFrame();

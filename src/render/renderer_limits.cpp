@@ -76,16 +76,16 @@ void checkVoxelResolution(const VkPhysicalDeviceLimits& limits, const std::strin
 void checkImageSize(const VkPhysicalDeviceLimits& limits, const std::string& deviceName,
                     const RenderSettings& settings) {
     for (const bool width : {true, false}) {
-        const uint64_t pixels = width ? settings.width : settings.height;
-        const uint64_t samples = pixels * settings.supersample;
+        const uint64_t pixels = width ? settings.image.width : settings.image.height;
+        const uint64_t samples = pixels * settings.image.supersample;
         const SideLimit limit = renderTargetSideLimit(limits, width);
         if (samples <= limit.value) continue;
-        const std::string ss = std::to_string(settings.supersample);
-        throw Error("a " + std::to_string(settings.width) + "×" + std::to_string(settings.height) + " image with " +
+        const std::string ss = std::to_string(settings.image.supersample);
+        throw Error("a " + std::to_string(settings.image.width) + "×" + std::to_string(settings.image.height) + " image with " +
                     ss + "×" + ss + " supersampling renders " + std::to_string(samples) + " samples " +
                     (width ? "across" : "down") + ", more than " + deviceName + "'s " + limit.name + " of " +
                     std::to_string(limit.value) + "; at this supersampling --" + (width ? "width" : "height") +
-                    " " + std::to_string(limit.value / settings.supersample) + " fits");
+                    " " + std::to_string(limit.value / settings.image.supersample) + " fits");
     }
 }
 
@@ -97,8 +97,8 @@ void checkShadowMaps(const VkPhysicalDeviceLimits& limits, const std::string& de
         uint32_t size;
         const char* option;
         const char* what;
-    } maps[] = {{settings.sunShadowMapSize, "--shadow-map", "sun shadow map"},
-                {settings.localShadowMapSize, "--local-shadow-map", "spot and point light shadow map"}};
+    } maps[] = {{settings.resources.sunShadowMapSize, "--shadow-map", "sun shadow map"},
+                {settings.resources.localShadowMapSize, "--local-shadow-map", "spot and point light shadow map"}};
     for (const auto& map : maps)
         if (map.size > side.value)
             throw Error("a " + std::to_string(map.size) + "² " + map.what + " is larger than " + deviceName + "'s " +
@@ -146,20 +146,20 @@ void checkSceneBuffers(const VkPhysicalDeviceLimits& limits, const std::string& 
 
 RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSettings& settings) {
     RendererMemoryEstimate estimate;
-    const uint64_t resolution = settings.voxelResolution;
+    const uint64_t resolution = settings.resources.voxelResolution;
     const uint64_t voxelCount = resolution * resolution * resolution;
-    estimate.voxels = voxelizeMemoryBytes(settings.voxelResolution) + withMips(voxelCount * kRadianceTexel);
-    if (settings.bounces >= 2) estimate.voxels += voxelCount * kRadianceTexel;
-    if (settings.anisotropicVoxels) estimate.voxels += 6 * withMips(voxelCount / 8 * kRadianceTexel);
+    estimate.voxels = voxelizeMemoryBytes(settings.resources.voxelResolution) + withMips(voxelCount * kRadianceTexel);
+    if (settings.resources.bounces >= 2) estimate.voxels += voxelCount * kRadianceTexel;
+    if (settings.resources.anisotropicVoxels) estimate.voxels += 6 * withMips(voxelCount / 8 * kRadianceTexel);
 
     const ShadowLayout layout = layoutShadows(scene.lights, scene.bounds(), settings);
-    const uint64_t sunSide = layout.sunLayers ? settings.sunShadowMapSize : 1;
-    const uint64_t localSide = layout.localLayers ? settings.localShadowMapSize : 1;
+    const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;
+    const uint64_t localSide = layout.localLayers ? settings.resources.localShadowMapSize : 1;
     estimate.shadowMaps = (std::max(layout.sunLayers, 1u) * sunSide * sunSide +
                            std::max(layout.localLayers, 1u) * localSide * localSide) * kShadowTexel;
 
-    const uint64_t samples = uint64_t(settings.width) * settings.height * settings.supersample * settings.supersample;
-    estimate.imageTargets = samples * kSampleBytes + uint64_t(settings.width) * settings.height * kResolvedPixel;
+    const uint64_t samples = uint64_t(settings.image.width) * settings.image.height * settings.image.supersample * settings.image.supersample;
+    estimate.imageTargets = samples * kSampleBytes + uint64_t(settings.image.width) * settings.image.height * kResolvedPixel;
 
     estimate.scene = scene.vertices.size() * sizeof(glsl::GpuVertex) + scene.indices.size() * sizeof(uint32_t) +
                      scene.triangleMaterials.size() * sizeof(uint32_t) +
@@ -170,10 +170,10 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
 
 void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceMemoryProperties& memory,
                          const std::string& deviceName, const Scene& scene, const RenderSettings& settings) {
-    if (settings.width == 0 || settings.height == 0 || settings.supersample == 0)
+    if (settings.image.width == 0 || settings.image.height == 0 || settings.image.supersample == 0)
         throw Error("the image size and supersampling must not be zero");
-    checkVoxelResolution(limits, deviceName, settings.voxelResolution);
-    checkVoxelizeMemory(memory, limits, deviceName, settings.voxelResolution);
+    checkVoxelResolution(limits, deviceName, settings.resources.voxelResolution);
+    checkVoxelizeMemory(memory, limits, deviceName, settings.resources.voxelResolution);
     checkImageSize(limits, deviceName, settings);
     checkShadowMaps(limits, deviceName, scene, settings);
     checkSceneBuffers(limits, deviceName, scene);
@@ -187,17 +187,17 @@ void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalD
                           bytesText(estimate.scene) + "), more than the " + bytesText(heap) + " heap of " + deviceName;
     // Suggest the setting that frees the most: a coarser voxel grid first, then smaller shadow maps.
     RenderSettings smaller = settings;
-    while (smaller.voxelResolution > kMinVoxelResolution && estimateRendererMemory(scene, smaller).total() > heap)
-        smaller.voxelResolution /= 2;
-    while (smaller.sunShadowMapSize > 512 && estimateRendererMemory(scene, smaller).total() > heap) {
-        smaller.sunShadowMapSize /= 2;
-        smaller.localShadowMapSize = std::max(smaller.localShadowMapSize / 2, 256u);
+    while (smaller.resources.voxelResolution > kMinVoxelResolution && estimateRendererMemory(scene, smaller).total() > heap)
+        smaller.resources.voxelResolution /= 2;
+    while (smaller.resources.sunShadowMapSize > 512 && estimateRendererMemory(scene, smaller).total() > heap) {
+        smaller.resources.sunShadowMapSize /= 2;
+        smaller.resources.localShadowMapSize = std::max(smaller.resources.localShadowMapSize / 2, 256u);
     }
     if (estimateRendererMemory(scene, smaller).total() <= heap) {
-        message += "; --voxels " + std::to_string(smaller.voxelResolution);
-        if (smaller.sunShadowMapSize != settings.sunShadowMapSize)
-            message += " --shadow-map " + std::to_string(smaller.sunShadowMapSize) + " --local-shadow-map " +
-                       std::to_string(smaller.localShadowMapSize);
+        message += "; --voxels " + std::to_string(smaller.resources.voxelResolution);
+        if (smaller.resources.sunShadowMapSize != settings.resources.sunShadowMapSize)
+            message += " --shadow-map " + std::to_string(smaller.resources.sunShadowMapSize) + " --local-shadow-map " +
+                       std::to_string(smaller.resources.localShadowMapSize);
         message += " fits";
     } else {
         message += "; a smaller image (--width, --height, --supersample) or scene is needed";

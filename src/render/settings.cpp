@@ -18,10 +18,39 @@ const char* renderModeName(RenderMode mode) {
     return "?";
 }
 
-Components effectiveComponents(const RenderSettings& settings) {
-    Components shown = settings.components;
-    const bool direct = settings.mode != RenderMode::Indirect;
-    const bool indirect = settings.mode != RenderMode::Direct;
+const char* debugViewLabel(DebugView view) {
+    static const char* const labels[debugViewCount] = {
+        "lit image",         "base colour",  "normal",       "depth",
+        "ambient occlusion", "voxel albedo", "voxel normal", "voxel radiance",
+    };
+    const uint32_t index = uint32_t(view);
+    return index < debugViewCount ? labels[index] : "?";
+}
+
+const std::array<ComponentInfo, 7>& componentTable() {
+    static const std::array<ComponentInfo, 7> table = {{
+        {&Components::directDiffuse, glsl::SHOW_DIRECT_DIFFUSE, "direct-diffuse", "direct diffuse"},
+        {&Components::directSpecular, glsl::SHOW_DIRECT_SPECULAR, "direct-specular", "direct specular"},
+        {&Components::indirectDiffuse, glsl::SHOW_INDIRECT_DIFFUSE, "indirect-diffuse", "indirect diffuse"},
+        {&Components::indirectSpecular, glsl::SHOW_INDIRECT_SPECULAR, "indirect-specular", "indirect specular"},
+        {&Components::ambientOcclusion, glsl::SHOW_AMBIENT_OCCLUSION, "ao", "ambient occlusion"},
+        {&Components::emission, glsl::SHOW_EMISSION, "emission", "emission"},
+        {&Components::shadows, glsl::USE_SHADOWS, "shadows", "shadows"},
+    }};
+    return table;
+}
+
+uint32_t componentFlags(const Components& components) {
+    uint32_t flags = 0;
+    for (const ComponentInfo& component : componentTable())
+        if (components.*component.member) flags |= component.shaderFlag;
+    return flags;
+}
+
+Components effectiveComponents(const ShadingSettings& shading) {
+    Components shown = shading.components;
+    const bool direct = shading.mode != RenderMode::Indirect;
+    const bool indirect = shading.mode != RenderMode::Direct;
     shown.directDiffuse &= direct;
     shown.directSpecular &= direct;
     shown.emission &= direct;
@@ -29,6 +58,12 @@ Components effectiveComponents(const RenderSettings& settings) {
     shown.indirectSpecular &= indirect;
     shown.ambientOcclusion &= indirect;
     return shown;
+}
+
+bool needsVoxels(const ShadingSettings& shading) {
+    const Components shown = effectiveComponents(shading);
+    return shown.indirectDiffuse || shown.indirectSpecular || (shown.ambientOcclusion && shading.ambientFactor > 0.0f) ||
+           shading.debugView >= DebugView::AmbientOcclusion;
 }
 
 }  // namespace vct

@@ -1,11 +1,17 @@
-// Everything a frame can be asked to do: image size, light components, shadow and cone parameters.
+// Everything a frame can be asked to do, grouped by what a change costs:
+//   ImageSettings    the image-sized targets (G-buffer, radiance, resolve): Renderer::resize rebuilds them;
+//   ResourceSettings the voxel volumes and shadow maps: a change needs a new Renderer;
+//   ShadingSettings  constants of the frame only: Renderer::setShading takes them at no cost.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
+
+#include "gpu_types.h"
 
 namespace vct {
 
@@ -16,17 +22,20 @@ enum class RenderMode { Full, Direct, Indirect };
 std::optional<RenderMode> parseRenderMode(const std::string& name);
 const char* renderModeName(RenderMode mode);
 
-// Views for understanding, shown instead of light (values as in shaders_glsl/gpu_types.h).
+// Views for understanding, shown instead of light: the values the shading pass reads.
 enum class DebugView : uint32_t {
-    None = 0,
-    BaseColor = 1,
-    Normal = 2,
-    Depth = 3,
-    AmbientOcclusion = 4,
-    VoxelAlbedo = 5,
-    VoxelNormal = 6,
-    VoxelRadiance = 7,
+    None = glsl::DEBUG_NONE,
+    BaseColor = glsl::DEBUG_BASE_COLOR,
+    Normal = glsl::DEBUG_NORMAL,
+    Depth = glsl::DEBUG_DEPTH,
+    AmbientOcclusion = glsl::DEBUG_AMBIENT_OCCLUSION,
+    VoxelAlbedo = glsl::DEBUG_VOXEL_ALBEDO,
+    VoxelNormal = glsl::DEBUG_VOXEL_NORMAL,
+    VoxelRadiance = glsl::DEBUG_VOXEL_RADIANCE,
 };
+constexpr uint32_t debugViewCount = glsl::DEBUG_VIEW_COUNT;
+// Its label in the viewer, e.g. "voxel albedo"; DebugView::None is "lit image".
+const char* debugViewLabel(DebugView view);
 
 struct Components {
     bool directDiffuse = true;
@@ -36,46 +45,78 @@ struct Components {
     bool ambientOcclusion = true;
     bool emission = true;
     bool shadows = true;
+    bool operator==(const Components&) const = default;
 };
 
-struct RenderSettings {
+// Each component once: its member, the SHOW_*/USE_* bit the shaders test, its --disable name and
+// its label in the viewer (whose keys 1…7 follow this order).
+struct ComponentInfo {
+    bool Components::*member;
+    uint32_t shaderFlag;
+    const char* option;
+    const char* label;
+};
+const std::array<ComponentInfo, 7>& componentTable();
+uint32_t componentFlags(const Components& components);
+
+struct ImageSettings {
     uint32_t width = 512;
     uint32_t height = 512;
     // Each pixel averages supersample² samples over its square, as "radiance of a pixel" means.
     uint32_t supersample = 2;
-    RenderMode mode = RenderMode::Full;
-    Components components;
-    // Light that is not physical: off by default so `full` converges towards the ground truth.
-    float ambientFactor = 0.0f;
+    bool operator==(const ImageSettings&) const = default;
+};
 
-    uint32_t sunShadowMapSize = 4096;    // directional lights
-    uint32_t localShadowMapSize = 1024;  // each spot light and each cube face of a point light
-    float shadowNormalOffset = 1.5f;     // texels
-    float shadowSlopeBias = 2.0f;
-    float pcfRadius = 2.0f;              // texels covered by the 5×5 kernel on each side
-
-    // Voxel cone tracing.
-    uint32_t voxelResolution = 128;      // voxels per side, a power of two from 32 to 512
-    uint32_t diffuseConeCount = 6;       // one along the normal, the rest in a ring around it
-    float diffuseConeAperture = 60.0f;   // full angle of each diffuse cone, degrees
-    float diffuseCentreWeight = 0.25f;   // the ring shares the rest equally (0.15 each for 6 cones)
-    float coneStep = 0.5f;               // step along a cone, as a fraction of its diameter there
-    float coneMaxDistance = 1.0f;        // longest cone, as a fraction of the grid's side
-    float coneStartOffset = 1.5f;        // voxels between the surface and a cone's apex
-    float coneStopOpacity = 0.95f;       // a cone stops once this opaque
-    float aoFalloff = 8.0f;              // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
-    bool skipEmptySpace = true;          // march through empty space with the coarse mips
+struct ResourceSettings {
+    uint32_t voxelResolution = 128;  // voxels per side, a power of two from 32 to 512
     // Six directional mip chains (Crassin et al.) instead of one. On the Cornell box isotropic mips
     // recover 22 % of the path-traced indirect light and anisotropic ones 75 %: thin walls stay
     // opaque for the wide diffuse cones.
     bool anisotropicVoxels = true;
     uint32_t bounces = 1;                // 2 = re-inject the light the voxels gather by cones
+    uint32_t sunShadowMapSize = 4096;    // directional lights
+    uint32_t localShadowMapSize = 1024;  // each spot light and each cube face of a point light
+    bool operator==(const ResourceSettings&) const = default;
+};
+
+struct ShadingSettings {
+    RenderMode mode = RenderMode::Full;
+    Components components;
+    // Light that is not physical: off by default so `full` converges towards the ground truth.
+    float ambientFactor = 0.0f;
+
+    float shadowNormalOffset = 1.5f;  // texels
+    float shadowSlopeBias = 2.0f;     // a change redraws the shadow maps
+    float pcfRadius = 2.0f;           // texels covered by the 5×5 kernel on each side
+
+    // Voxel cone tracing.
+    uint32_t diffuseConeCount = 6;      // one along the normal, the rest in a ring around it
+    float diffuseConeAperture = 60.0f;  // full angle of each diffuse cone, degrees
+    float diffuseCentreWeight = 0.25f;  // the ring shares the rest equally (0.15 each for 6 cones)
+    float coneStep = 0.5f;              // step along a cone, as a fraction of its diameter there
+    float coneMaxDistance = 1.0f;       // longest cone, as a fraction of the grid's side
+    float coneStartOffset = 1.5f;       // voxels between the surface and a cone's apex
+    float coneStopOpacity = 0.95f;      // a cone stops once this opaque
+    float aoFalloff = 8.0f;             // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
+    bool skipEmptySpace = true;         // march through empty space with the coarse mips
 
     DebugView debugView = DebugView::None;
-    uint32_t debugVoxelMip = 0;          // the mip level the voxel views show
+    uint32_t debugVoxelMip = 0;  // the mip level the voxel views show
+    bool operator==(const ShadingSettings&) const = default;
+};
+
+struct RenderSettings {
+    ImageSettings image;
+    ResourceSettings resources;
+    ShadingSettings shading;
+    bool operator==(const RenderSettings&) const = default;
 };
 
 // The components a mode shows (toggles switched off stay off).
-Components effectiveComponents(const RenderSettings& settings);
+Components effectiveComponents(const ShadingSettings& shading);
+
+// Whether the frame reads the voxels at all (indirect light, AO, voxel views): if not, no voxel
+// pass runs.
+bool needsVoxels(const ShadingSettings& shading);
 
 }  // namespace vct

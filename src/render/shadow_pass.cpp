@@ -41,7 +41,7 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& scene
             glsl::ShadowView view{};
             view.viewProjection = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) *
                                   lookAlong(eye, light.direction, glm::vec3(0, 1, 0));
-            view.params = glm::vec4(0.0f, float(layout.sunLayers++), 2.0f * radius / float(settings.sunShadowMapSize),
+            view.params = glm::vec4(0.0f, float(layout.sunLayers++), 2.0f * radius / float(settings.resources.sunShadowMapSize),
                                     0.0f);
             layout.views.push_back(view);
             gpu.spotShadow.w = 1.0f;
@@ -58,16 +58,16 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& scene
             if (light.type == LightType::Spot) {
                 const float fov = std::min(2.0f * light.outerConeAngle * 1.05f + 0.02f, glm::radians(170.0f));
                 layout.views.push_back(perspectiveView(light.position, light.direction, fov, znear, zfar,
-                                                       layout.localLayers++, settings.localShadowMapSize));
+                                                       layout.localLayers++, settings.resources.localShadowMapSize));
                 gpu.spotShadow.w = 1.0f;
             } else {
                 // Faces a little wider than 90° so the PCF kernel near a face edge stays inside the face.
-                const float margin = 1.0f + 2.0f * (settings.pcfRadius + 1.0f) / float(settings.localShadowMapSize);
+                const float margin = 1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(settings.resources.localShadowMapSize);
                 const float fov = 2.0f * std::atan(margin);
                 const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
                 for (const glm::vec3& axis : axes)
                     layout.views.push_back(perspectiveView(light.position, axis, fov, znear, zfar,
-                                                           layout.localLayers++, settings.localShadowMapSize));
+                                                           layout.localLayers++, settings.resources.localShadowMapSize));
                 gpu.spotShadow.w = 6.0f;
             }
         }
@@ -88,8 +88,8 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
         desc.debugName = name;
         return GpuImage(context, desc);
     };
-    sunMaps = makeArray(layout.sunLayers, settings.sunShadowMapSize, "sun shadow maps");
-    localMaps = makeArray(layout.localLayers, settings.localShadowMapSize, "local shadow maps");
+    sunMaps = makeArray(layout.sunLayers, settings.resources.sunShadowMapSize, "sun shadow maps");
+    localMaps = makeArray(layout.localLayers, settings.resources.localShadowMapSize, "local shadow maps");
 
     VkSamplerCreateInfo samplerInfo = linearClampSampler();
     samplerInfo.compareEnable = VK_TRUE;
@@ -121,7 +121,7 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     DescriptorPush().buffer(0, scene.vertices.buffer).buffer(1, viewsBuffer)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
     vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdSetDepthBias(commands, 0.0f, 0.0f, settings.shadowSlopeBias);
+    vkCmdSetDepthBias(commands, 0.0f, 0.0f, settings.shading.shadowSlopeBias);
 
     // Unused arrays (no light of that kind) are cleared once so they sample as "lit".
     auto renderLayer = [&](GpuImage& maps, uint32_t layer, int viewIndex) {

@@ -35,12 +35,6 @@ float FrameHistory::averageFrameMilliseconds() const {
     return sum / float(count);
 }
 
-bool needsNewRenderer(const RenderSettings& current, const RenderSettings& wanted) {
-    return current.voxelResolution != wanted.voxelResolution || current.sunShadowMapSize != wanted.sunShadowMapSize ||
-           current.localShadowMapSize != wanted.localShadowMapSize || current.supersample != wanted.supersample ||
-           current.anisotropicVoxels != wanted.anisotropicVoxels || current.bounces != wanted.bounces;
-}
-
 // A power-of-two choice shown as a combo box ("64", "128", ...).
 static void powerOfTwoCombo(const char* label, uint32_t& value, uint32_t smallest, uint32_t largest) {
     char current[16];
@@ -81,44 +75,44 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
     RenderSettings& settings = state.settings;
     if (!ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::SliderFloat("exposure", &state.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-    int mode = int(settings.mode);
+    int mode = int(settings.shading.mode);
     ImGui::Combo("mode (M)", &mode, "full\0direct\0indirect\0");
-    settings.mode = RenderMode(mode);
-    Components& c = settings.components;
-    ImGui::Checkbox("1 direct diffuse", &c.directDiffuse);
-    ImGui::SameLine(165);
-    ImGui::Checkbox("2 direct specular", &c.directSpecular);
-    ImGui::Checkbox("3 indirect diffuse", &c.indirectDiffuse);
-    ImGui::SameLine(165);
-    ImGui::Checkbox("4 indirect specular", &c.indirectSpecular);
-    ImGui::Checkbox("5 ambient occlusion", &c.ambientOcclusion);
-    ImGui::SameLine(165);
-    ImGui::Checkbox("6 emission", &c.emission);
-    ImGui::Checkbox("7 shadows", &c.shadows);
-    ImGui::SliderFloat("ambient", &settings.ambientFactor, 0.0f, 1.0f, "%.3f");
-    int view = int(settings.debugView);
-    ImGui::Combo("view (V)", &view,
-                 "lit image\0base colour\0normal\0depth\0ambient occlusion\0voxel albedo\0voxel normal\0"
-                 "voxel radiance\0");
-    settings.debugView = DebugView(view);
-    int mip = int(settings.debugVoxelMip);
+    settings.shading.mode = RenderMode(mode);
+    // Two columns, each component labelled with its key (1…7, in the table's order).
+    for (size_t i = 0; i < componentTable().size(); ++i) {
+        const ComponentInfo& component = componentTable()[i];
+        if (i % 2 == 1) ImGui::SameLine(165);
+        const std::string label = std::to_string(i + 1) + " " + component.label;
+        ImGui::Checkbox(label.c_str(), &(settings.shading.components.*component.member));
+    }
+    ImGui::SliderFloat("ambient", &settings.shading.ambientFactor, 0.0f, 1.0f, "%.3f");
+    int view = int(settings.shading.debugView);
+    ImGui::Combo(
+        "view (V)", &view,
+        [](void*, int index, const char** text) {
+            *text = debugViewLabel(DebugView(index));
+            return true;
+        },
+        nullptr, int(debugViewCount));
+    settings.shading.debugView = DebugView(view);
+    int mip = int(settings.shading.debugVoxelMip);
     ImGui::SliderInt("voxel mip", &mip, 0, int(facts.voxelMips) - 1);
-    settings.debugVoxelMip = uint32_t(std::clamp(mip, 0, int(facts.voxelMips) - 1));
+    settings.shading.debugVoxelMip = uint32_t(std::clamp(mip, 0, int(facts.voxelMips) - 1));
 }
 
 static void coneSection(RenderSettings& settings) {
     if (!ImGui::CollapsingHeader("Cones")) return;
-    int cones = int(settings.diffuseConeCount);
+    int cones = int(settings.shading.diffuseConeCount);
     ImGui::SliderInt("diffuse cones", &cones, 1, 16);
-    settings.diffuseConeCount = uint32_t(cones);
-    ImGui::SliderFloat("aperture", &settings.diffuseConeAperture, 5.0f, 120.0f, "%.0f deg");
-    ImGui::SliderFloat("centre weight", &settings.diffuseCentreWeight, 0.0f, 1.0f);
-    ImGui::SliderFloat("step", &settings.coneStep, 0.1f, 2.0f, "%.2f diameters");
-    ImGui::SliderFloat("max distance", &settings.coneMaxDistance, 0.05f, 1.5f, "%.2f grid");
-    ImGui::SliderFloat("start offset", &settings.coneStartOffset, 0.0f, 4.0f, "%.2f voxels");
-    ImGui::SliderFloat("stop opacity", &settings.coneStopOpacity, 0.5f, 1.0f);
-    ImGui::SliderFloat("AO falloff", &settings.aoFalloff, 0.0f, 32.0f);
-    ImGui::Checkbox("skip empty space", &settings.skipEmptySpace);
+    settings.shading.diffuseConeCount = uint32_t(cones);
+    ImGui::SliderFloat("aperture", &settings.shading.diffuseConeAperture, 5.0f, 120.0f, "%.0f deg");
+    ImGui::SliderFloat("centre weight", &settings.shading.diffuseCentreWeight, 0.0f, 1.0f);
+    ImGui::SliderFloat("step", &settings.shading.coneStep, 0.1f, 2.0f, "%.2f diameters");
+    ImGui::SliderFloat("max distance", &settings.shading.coneMaxDistance, 0.05f, 1.5f, "%.2f grid");
+    ImGui::SliderFloat("start offset", &settings.shading.coneStartOffset, 0.0f, 4.0f, "%.2f voxels");
+    ImGui::SliderFloat("stop opacity", &settings.shading.coneStopOpacity, 0.5f, 1.0f);
+    ImGui::SliderFloat("AO falloff", &settings.shading.aoFalloff, 0.0f, 32.0f);
+    ImGui::Checkbox("skip empty space", &settings.shading.skipEmptySpace);
 }
 
 static void resolutionSection(ViewerState& state) {
@@ -128,16 +122,16 @@ static void resolutionSection(ViewerState& state) {
     int scale = state.renderScale >= 1.0f ? 0 : state.renderScale >= 0.5f ? 1 : 2;
     ImGui::Combo("render scale", &scale, "1 (window size)\0" "1/2\0" "1/4\0");
     state.renderScale = scale == 0 ? 1.0f : scale == 1 ? 0.5f : 0.25f;
-    powerOfTwoCombo("voxels", settings.voxelResolution, 32, 512);
-    powerOfTwoCombo("sun shadow map", settings.sunShadowMapSize, 256, 8192);
-    powerOfTwoCombo("local shadow map", settings.localShadowMapSize, 128, 4096);
-    int supersample = int(settings.supersample);
+    powerOfTwoCombo("voxels", settings.resources.voxelResolution, 32, 512);
+    powerOfTwoCombo("sun shadow map", settings.resources.sunShadowMapSize, 256, 8192);
+    powerOfTwoCombo("local shadow map", settings.resources.localShadowMapSize, 128, 4096);
+    int supersample = int(settings.image.supersample);
     ImGui::SliderInt("supersample", &supersample, 1, 4);
-    settings.supersample = uint32_t(supersample);
-    ImGui::Checkbox("anisotropic voxels", &settings.anisotropicVoxels);
-    bool secondBounce = settings.bounces >= 2;
+    settings.image.supersample = uint32_t(supersample);
+    ImGui::Checkbox("anisotropic voxels", &settings.resources.anisotropicVoxels);
+    bool secondBounce = settings.resources.bounces >= 2;
     ImGui::Checkbox("second bounce", &secondBounce);
-    settings.bounces = secondBounce ? 2 : 1;
+    settings.resources.bounces = secondBounce ? 2 : 1;
 }
 
 static void presetRow(ViewerState& state) {
@@ -147,12 +141,12 @@ static void presetRow(ViewerState& state) {
         if (!ImGui::Button(name.c_str())) continue;
         // A preset brings its quality settings; the view (mode, toggles, debug view) stays.
         RenderSettings applied = preset;
-        applied.width = state.settings.width;
-        applied.height = state.settings.height;
-        applied.mode = state.settings.mode;
-        applied.components = state.settings.components;
-        applied.debugView = state.settings.debugView;
-        applied.debugVoxelMip = 0;
+        applied.image.width = state.settings.image.width;
+        applied.image.height = state.settings.image.height;
+        applied.shading.mode = state.settings.shading.mode;
+        applied.shading.components = state.settings.shading.components;
+        applied.shading.debugView = state.settings.shading.debugView;
+        applied.shading.debugVoxelMip = 0;
         state.settings = applied;
     }
 }

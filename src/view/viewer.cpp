@@ -30,22 +30,6 @@
 namespace vct {
 namespace {
 
-// The fields setShadingSettings() takes: when none changed (and neither did camera nor lights),
-// the last image is still right and the renderer need not run.
-bool sameShading(const RenderSettings& a, const RenderSettings& b) {
-    const Components &x = a.components, &y = b.components;
-    return a.mode == b.mode && x.directDiffuse == y.directDiffuse && x.directSpecular == y.directSpecular &&
-           x.indirectDiffuse == y.indirectDiffuse && x.indirectSpecular == y.indirectSpecular &&
-           x.ambientOcclusion == y.ambientOcclusion && x.emission == y.emission && x.shadows == y.shadows &&
-           a.ambientFactor == b.ambientFactor && a.shadowNormalOffset == b.shadowNormalOffset &&
-           a.shadowSlopeBias == b.shadowSlopeBias && a.pcfRadius == b.pcfRadius &&
-           a.diffuseConeCount == b.diffuseConeCount && a.diffuseConeAperture == b.diffuseConeAperture &&
-           a.diffuseCentreWeight == b.diffuseCentreWeight && a.coneStep == b.coneStep &&
-           a.coneMaxDistance == b.coneMaxDistance && a.coneStartOffset == b.coneStartOffset &&
-           a.coneStopOpacity == b.coneStopOpacity && a.aoFalloff == b.aoFalloff &&
-           a.skipEmptySpace == b.skipEmptySpace && a.debugView == b.debugView && a.debugVoxelMip == b.debugVoxelMip;
-}
-
 bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
 }
@@ -135,7 +119,7 @@ private:
 };
 
 Viewer::Viewer(ViewerOptions options)
-    : options_(std::move(options)), window_(options_.settings.width, options_.settings.height) {
+    : options_(std::move(options)), window_(options_.settings.image.width, options_.settings.image.height) {
     installInputCallbacks(window_.handle, &input_);
     ContextOptions contextOptions = options_.context;
     uint32_t extensionCount = 0;
@@ -200,10 +184,10 @@ void Viewer::recreateSwapchain() {
 // The renderer draws at the window's size × the render scale; the present pass scales it up.
 void Viewer::resizeRenderer() {
     shownRenderScale_ = state_.renderScale;
-    state_.settings.width = std::max(1u, uint32_t(std::lround(swapchain_->extent.width * state_.renderScale)));
-    state_.settings.height = std::max(1u, uint32_t(std::lround(swapchain_->extent.height * state_.renderScale)));
+    state_.settings.image.width = std::max(1u, uint32_t(std::lround(swapchain_->extent.width * state_.renderScale)));
+    state_.settings.image.height = std::max(1u, uint32_t(std::lround(swapchain_->extent.height * state_.renderScale)));
     if (renderer_) {
-        renderer_->resize(state_.settings.width, state_.settings.height);  // the voxels are kept
+        renderer_->resize(state_.settings.image);  // the voxels are kept
         imageStale_ = true;
     }
 }
@@ -213,7 +197,7 @@ void Viewer::buildRenderer() {
     renderer_.reset();  // free the old voxels before allocating new ones
     renderer_ = std::make_unique<Renderer>(*context_, scene_, state_.settings);
     renderer_->setCamera(camera_);
-    renderer_->setShadingSettings(state_.settings);
+    renderer_->setShading(state_.settings.shading);
     imageStale_ = true;
 }
 
@@ -289,26 +273,23 @@ void Viewer::applyScript() {
 void Viewer::handleKeys(float seconds) {
     for (int key : input_.keysPressed) {
         RenderSettings& settings = state_.settings;
-        Components& c = settings.components;
+        // Keys 1…7 toggle the components in componentTable()'s order.
+        if (key >= GLFW_KEY_1 && size_t(key - GLFW_KEY_1) < componentTable().size()) {
+            bool& shown = settings.shading.components.*componentTable()[size_t(key - GLFW_KEY_1)].member;
+            shown = !shown;
+        }
         switch (key) {
             case GLFW_KEY_F1:
             case GLFW_KEY_H: state_.showGuide = !state_.showGuide; break;
             case GLFW_KEY_TAB: state_.showPanels = !state_.showPanels; break;
             case GLFW_KEY_R: state_.requestCameraReset = true; break;
             case GLFW_KEY_O: state_.requestOrbitToggle = true; break;
-            case GLFW_KEY_1: c.directDiffuse = !c.directDiffuse; break;
-            case GLFW_KEY_2: c.directSpecular = !c.directSpecular; break;
-            case GLFW_KEY_3: c.indirectDiffuse = !c.indirectDiffuse; break;
-            case GLFW_KEY_4: c.indirectSpecular = !c.indirectSpecular; break;
-            case GLFW_KEY_5: c.ambientOcclusion = !c.ambientOcclusion; break;
-            case GLFW_KEY_6: c.emission = !c.emission; break;
-            case GLFW_KEY_7: c.shadows = !c.shadows; break;
-            case GLFW_KEY_M: settings.mode = RenderMode((uint32_t(settings.mode) + 1) % 3); break;
-            case GLFW_KEY_V: settings.debugView = DebugView((uint32_t(settings.debugView) + 1) % 8); break;
+            case GLFW_KEY_M: settings.shading.mode = RenderMode((uint32_t(settings.shading.mode) + 1) % 3); break;
+            case GLFW_KEY_V: settings.shading.debugView = DebugView((uint32_t(settings.shading.debugView) + 1) % debugViewCount); break;
             case GLFW_KEY_LEFT_BRACKET:
-                if (settings.debugVoxelMip > 0) --settings.debugVoxelMip;
+                if (settings.shading.debugVoxelMip > 0) --settings.shading.debugVoxelMip;
                 break;
-            case GLFW_KEY_RIGHT_BRACKET: ++settings.debugVoxelMip; break;  // clamped by the panel
+            case GLFW_KEY_RIGHT_BRACKET: ++settings.shading.debugVoxelMip; break;  // clamped by the panel
             case GLFW_KEY_L: state_.sun.animate = !state_.sun.animate; break;
             case GLFW_KEY_F12:
             case GLFW_KEY_P: state_.requestScreenshot = true; break;
@@ -390,7 +371,7 @@ void Viewer::applyRequests() {
         shownSun_ = sun;
         imageStale_ = true;
     }
-    if (needsNewRenderer(renderer_->settings(), state_.settings)) {
+    if (renderer_->settings().resources != state_.settings.resources) {
         const RenderSettings previous = renderer_->settings();
         try {
             const std::vector<Light> lights = renderer_->lights();
@@ -402,8 +383,12 @@ void Viewer::applyRequests() {
             buildRenderer();
         }
     }
-    if (!sameShading(renderer_->settings(), state_.settings)) {
-        renderer_->setShadingSettings(state_.settings);
+    if (renderer_->settings().image != state_.settings.image) {
+        renderer_->resize(state_.settings.image);
+        imageStale_ = true;
+    }
+    if (renderer_->settings().shading != state_.settings.shading) {
+        renderer_->setShading(state_.settings.shading);
         imageStale_ = true;
     }
     if (state_.vsync != shownVsync_) swapchainStale_ = true;
@@ -416,8 +401,8 @@ UiFacts Viewer::facts() const {
     facts.presentMode = presentModeName(swapchain_->presentMode);
     facts.width = swapchain_->extent.width;
     facts.height = swapchain_->extent.height;
-    facts.renderWidth = renderer_->settings().width;
-    facts.renderHeight = renderer_->settings().height;
+    facts.renderWidth = renderer_->settings().image.width;
+    facts.renderHeight = renderer_->settings().image.height;
     facts.voxelResolution = renderer_->voxelGrid().resolution.x;
     facts.voxelMips = renderer_->voxelRadiance().desc.mipLevels;
     facts.deviceMemoryBytes = renderer_->deviceMemoryBytes();
@@ -467,7 +452,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     presentTimer_->begin(frame.commands, "present");
     TonemapParams tonemap;
     tonemap.exposure = state_.exposure;
-    const DebugView view = renderer_->settings().debugView;
+    const DebugView view = renderer_->settings().shading.debugView;
     tonemap.toneCurve = view == DebugView::None || view == DebugView::VoxelRadiance;
     presentPass_->begin(frame.commands, imageIndex, extent, renderer_->output(), tonemap);
     if (drawUi) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.commands);

@@ -30,8 +30,8 @@ struct FrameHistory {
 };
 
 struct ViewerState {
-    // Wanted settings; width and height follow the window. Voxel and shadow-map resolution,
-    // supersampling, mip kind and bounces take a new Renderer (see needsNewRenderer).
+    // Wanted settings; width and height follow the window. New resources (voxels, shadow maps)
+    // take a new Renderer, new image settings a resize, shading settings nothing.
     RenderSettings settings;
     float exposure = 1.0f;
     float renderScale = 1.0f;               // renderer image size / window size
@@ -55,7 +55,5 @@ struct ViewerState {
     FrameHistory history;
 };
 
-// Settings that size images or voxels: changing them means building a new Renderer.
-bool needsNewRenderer(const RenderSettings& current, const RenderSettings& wanted);
 
 }  // namespace vct

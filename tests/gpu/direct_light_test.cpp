@@ -56,10 +56,10 @@ glm::vec3 pixelRay(const Camera& camera, uint32_t x, uint32_t y, uint32_t width,
 
 RenderSettings directSettings(uint32_t size) {
     RenderSettings settings;
-    settings.width = size;
-    settings.height = size;
-    settings.supersample = 1;  // one sample at the pixel centre, where the analytic value is computed
-    settings.mode = RenderMode::Direct;
+    settings.image.width = size;
+    settings.image.height = size;
+    settings.image.supersample = 1;  // one sample at the pixel centre, where the analytic value is computed
+    settings.shading.mode = RenderMode::Direct;
     return settings;
 }
 
@@ -138,8 +138,8 @@ TEST_F(CornellDirect, EveryModeIsFiniteAndNonNegative) {
     const Scene scene = loadScene("cornell");
     for (RenderMode mode : {RenderMode::Full, RenderMode::Direct, RenderMode::Indirect}) {
         RenderSettings settings = directSettings(64);
-        settings.mode = mode;
-        settings.supersample = 2;
+        settings.shading.mode = mode;
+        settings.image.supersample = 2;
         Renderer renderer(gpu(), scene, settings);
         renderer.renderFrame();
         for (float value : renderer.readImage().rgb) {

@@ -34,11 +34,11 @@ constexpr FailureBounds kBounds;
 
 RenderSettings smallSettings(uint32_t size, uint32_t voxels) {
     RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.supersample = 1;
-    settings.voxelResolution = voxels;
-    settings.sunShadowMapSize = 512;
-    settings.localShadowMapSize = 256;
+    settings.image.width = settings.image.height = size;
+    settings.image.supersample = 1;
+    settings.resources.voxelResolution = voxels;
+    settings.resources.sunShadowMapSize = 512;
+    settings.resources.localShadowMapSize = 256;
     return settings;
 }
 
@@ -61,8 +61,8 @@ TEST_F(FailureModes, ThinWallLeaksAlmostNoLightIntoTheDarkRoom) {
 TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTracer) {
     const Scene scene = loadScene("cornell");
     RenderSettings settings = smallSettings(32, 32);
-    settings.supersample = 2;
-    settings.mode = RenderMode::Indirect;
+    settings.image.supersample = 2;
+    settings.shading.mode = RenderMode::Indirect;
     const std::vector<bench::ResolutionLuminance> results =
         bench::measureResolutionDrift(gpu(), scene, settings, {32, 64, 128, 256});
 
@@ -98,7 +98,7 @@ TEST_F(FailureModes, SmallCameraAndLightMovesChangeTheImageLittle) {
     const Scene scene = loadScene("cornell");
     for (RenderMode mode : {RenderMode::Full, RenderMode::Indirect}) {
         RenderSettings settings = smallSettings(64, 64);
-        settings.mode = mode;
+        settings.shading.mode = mode;
         const bench::FlickerMeasurement still = bench::measureFlicker(gpu(), scene, settings, 0.0f, 0.0f);
         EXPECT_EQ(still.cameraChange, 0.0) << "a step of zero changes nothing";
         EXPECT_EQ(still.lightChange, 0.0);

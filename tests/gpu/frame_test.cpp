@@ -14,12 +14,12 @@ namespace {
 
 RenderSettings smallSettings() {
     RenderSettings settings;
-    settings.width = 32;
-    settings.height = 32;
-    settings.supersample = 1;
-    settings.voxelResolution = 32;
-    settings.sunShadowMapSize = 256;
-    settings.localShadowMapSize = 128;
+    settings.image.width = 32;
+    settings.image.height = 32;
+    settings.image.supersample = 1;
+    settings.resources.voxelResolution = 32;
+    settings.resources.sunShadowMapSize = 256;
+    settings.resources.localShadowMapSize = 128;
     return settings;
 }
 
@@ -80,7 +80,7 @@ TEST_F(Frame, GeometryMoveRevoxelizesAndRedrawsShadows) {
 
 TEST_F(Frame, DirectLightNeedsNoVoxels) {
     RenderSettings settings = smallSettings();
-    settings.mode = RenderMode::Direct;
+    settings.shading.mode = RenderMode::Direct;
     Renderer renderer(gpu(), scene, settings);
     const FrameStats stats = renderer.renderFrame();
     for (const char* pass : {"voxelize", "inject", "mips"}) EXPECT_FALSE(stats.ran(pass)) << pass;
@@ -89,11 +89,11 @@ TEST_F(Frame, DirectLightNeedsNoVoxels) {
 
 TEST_F(Frame, SwitchingIndirectLightOnBuildsTheVoxelsThen) {
     RenderSettings settings = smallSettings();
-    settings.mode = RenderMode::Direct;
+    settings.shading.mode = RenderMode::Direct;
     Renderer renderer(gpu(), scene, settings);
     renderer.renderFrame();
-    settings.mode = RenderMode::Full;
-    renderer.setShadingSettings(settings);
+    settings.shading.mode = RenderMode::Full;
+    renderer.setShading(settings.shading);
     const FrameStats stats = renderer.renderFrame();
     for (const char* pass : {"voxelize", "inject", "mips"}) EXPECT_TRUE(stats.ran(pass)) << pass;
     EXPECT_FALSE(stats.ran("shadow"));
@@ -127,9 +127,9 @@ TEST_F(Frame, ColourBleedsFromTheRedAndGreenWalls) {
     // In the indirect light alone, the left of the picture (the red wall's side) is much redder
     // than the right (the green wall's side).
     RenderSettings settings = smallSettings();
-    settings.width = settings.height = 64;
-    settings.mode = RenderMode::Indirect;
-    settings.voxelResolution = 64;
+    settings.image.width = settings.image.height = 64;
+    settings.shading.mode = RenderMode::Indirect;
+    settings.resources.voxelResolution = 64;
     Renderer renderer(gpu(), scene, settings);
     renderer.renderFrame();
     const Image image = renderer.readImage();
@@ -146,10 +146,10 @@ TEST_F(Frame, ColourBleedsFromTheRedAndGreenWalls) {
 
 TEST_F(Frame, SecondBounceAddsLightAndRunsOnlyWithTheInjection) {
     RenderSettings settings = smallSettings();
-    settings.mode = RenderMode::Indirect;
+    settings.shading.mode = RenderMode::Indirect;
     Renderer oneBounce(gpu(), scene, settings);
     oneBounce.renderFrame();
-    settings.bounces = 2;
+    settings.resources.bounces = 2;
     Renderer twoBounces(gpu(), scene, settings);
     EXPECT_TRUE(twoBounces.renderFrame().ran("bounce"));
     EXPECT_FALSE(twoBounces.renderFrame().ran("bounce")) << "nothing changed";

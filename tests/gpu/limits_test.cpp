@@ -16,11 +16,11 @@ namespace {
 
 RenderSettings smallSettings() {
     RenderSettings settings;
-    settings.width = settings.height = 32;
-    settings.supersample = 1;
-    settings.voxelResolution = 32;
-    settings.sunShadowMapSize = 256;
-    settings.localShadowMapSize = 128;
+    settings.image.width = settings.image.height = 32;
+    settings.image.supersample = 1;
+    settings.resources.voxelResolution = 32;
+    settings.resources.sunShadowMapSize = 256;
+    settings.resources.localShadowMapSize = 128;
     return settings;
 }
 
@@ -54,19 +54,19 @@ TEST_F(Limits, TheDeviceHoldsTheDefaultsAndTheSmallTestSettings) {
 TEST_F(Limits, VoxelGridBeyondMaxImageDimension3DIsRefusedNamingTheLimitAndWhatFits) {
     limits.maxImageDimension3D = 200;
     RenderSettings settings = smallSettings();
-    settings.voxelResolution = 256;
+    settings.resources.voxelResolution = 256;
     const std::string message = check(cornell, settings);
     EXPECT_NE(message.find("256³ voxel grid"), std::string::npos) << message;
     EXPECT_NE(message.find("maxImageDimension3D of 200"), std::string::npos) << message;
     EXPECT_NE(message.find("--voxels 128 fits"), std::string::npos) << message;
-    settings.voxelResolution = 128;
+    settings.resources.voxelResolution = 128;
     EXPECT_EQ(check(cornell, settings), "");
 }
 
 TEST_F(Limits, VoxelResolutionMustBeAPowerOfTwoInRange) {
     RenderSettings settings = smallSettings();
     for (uint32_t resolution : {0u, 16u, 48u, 100u, 1000u, 1024u}) {
-        settings.voxelResolution = resolution;
+        settings.resources.voxelResolution = resolution;
         const std::string message = check(cornell, settings);
         EXPECT_NE(message.find("power of two from 32 to 512, not " + std::to_string(resolution)), std::string::npos)
             << message;
@@ -76,14 +76,14 @@ TEST_F(Limits, VoxelResolutionMustBeAPowerOfTwoInRange) {
 TEST_F(Limits, ShadowMapsBeyondMaxImageDimension2DAreRefusedNamingTheOption) {
     limits.maxImageDimension2D = 2048;
     RenderSettings settings = smallSettings();
-    settings.sunShadowMapSize = 4096;
+    settings.resources.sunShadowMapSize = 4096;
     std::string message = check(cornell, settings);
     EXPECT_NE(message.find("4096² sun shadow map"), std::string::npos) << message;
     EXPECT_NE(message.find("maxImageDimension2D of 2048"), std::string::npos) << message;
     EXPECT_NE(message.find("--shadow-map 2048 fits"), std::string::npos) << message;
 
     settings = smallSettings();
-    settings.localShadowMapSize = 4096;
+    settings.resources.localShadowMapSize = 4096;
     limits.maxFramebufferHeight = 1024;  // the tightest limit is the one named
     message = check(cornell, settings);
     EXPECT_NE(message.find("maxFramebufferHeight of 1024"), std::string::npos) << message;
@@ -93,13 +93,13 @@ TEST_F(Limits, ShadowMapsBeyondMaxImageDimension2DAreRefusedNamingTheOption) {
 TEST_F(Limits, ImageWhoseSupersampledTargetsExceedTheDeviceIsRefused) {
     limits.maxFramebufferWidth = 1000;
     RenderSettings settings = smallSettings();
-    settings.width = 600;
-    settings.supersample = 2;
+    settings.image.width = 600;
+    settings.image.supersample = 2;
     const std::string message = check(cornell, settings);
     EXPECT_NE(message.find("1200 samples across"), std::string::npos) << message;
     EXPECT_NE(message.find("maxFramebufferWidth of 1000"), std::string::npos) << message;
     EXPECT_NE(message.find("--width 500 fits"), std::string::npos) << message;
-    settings.width = 500;
+    settings.image.width = 500;
     EXPECT_EQ(check(cornell, settings), "");
 }
 
@@ -124,7 +124,7 @@ TEST_F(Limits, TooLittleDeviceMemoryIsRefusedWithASettingThatFits) {
     memory.memoryHeaps[0].size = VkDeviceSize(96) << 20;
     memory.memoryHeaps[0].flags = VK_MEMORY_HEAP_DEVICE_LOCAL_BIT;
     RenderSettings settings;
-    settings.voxelResolution = 64;
+    settings.resources.voxelResolution = 64;
     const std::string message = check(cornell, settings);
     EXPECT_NE(message.find("of GPU memory"), std::string::npos) << message;
     EXPECT_NE(message.find("96 MiB heap of a small GPU"), std::string::npos) << message;
@@ -133,7 +133,7 @@ TEST_F(Limits, TooLittleDeviceMemoryIsRefusedWithASettingThatFits) {
 
 TEST_F(Limits, RendererRefusesBeforeAllocatingAnything) {
     RenderSettings settings = smallSettings();
-    settings.width = gpu().properties.limits.maxImageDimension2D + 1;
+    settings.image.width = gpu().properties.limits.maxImageDimension2D + 1;
     const std::string message = refusal([&] { Renderer renderer(gpu(), cornell, settings); });
     EXPECT_NE(message.find(gpu().deviceName()), std::string::npos) << message;
     EXPECT_NE(message.find("samples across"), std::string::npos) << message;

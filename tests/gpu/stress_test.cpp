@@ -31,11 +31,11 @@ constexpr Tolerances kTolerances;
 
 RenderSettings smallSettings(uint32_t size = 32, uint32_t voxels = 32) {
     RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.supersample = 1;
-    settings.voxelResolution = voxels;
-    settings.sunShadowMapSize = 512;
-    settings.localShadowMapSize = 256;
+    settings.image.width = settings.image.height = size;
+    settings.image.supersample = 1;
+    settings.resources.voxelResolution = voxels;
+    settings.resources.sunShadowMapSize = 512;
+    settings.resources.localShadowMapSize = 256;
     return settings;
 }
 
@@ -106,7 +106,7 @@ TEST_F(Stress, ZeroLengthNormalsFallBackToTheTrianglePlane) {
     Scene scene = cornell;
     for (Vertex& vertex : scene.vertices) vertex.normal = glm::vec3(0.0f);
     RenderSettings settings = smallSettings();
-    settings.mode = RenderMode::Direct;
+    settings.shading.mode = RenderMode::Direct;
     const double change = bench::relativeL1Difference(render(cornell, settings, "face normals", false),
                                                       render(scene, settings, "zero normals", false));
     std::printf("[ stress ] zero normals, direct light: relative L1 change %.5f\n", change);
@@ -172,9 +172,9 @@ TEST_F(Stress, FlatSceneWithZeroExtentAlongOneAxisLightsItselfNot) {
     scene.cameras.push_back(camera);
 
     RenderSettings settings = smallSettings();
-    settings.mode = RenderMode::Direct;
+    settings.shading.mode = RenderMode::Direct;
     const double direct = bench::meanLuminance(render(scene, settings, "flat scene, direct", false));
-    settings.mode = RenderMode::Indirect;
+    settings.shading.mode = RenderMode::Indirect;
     const double indirect = bench::meanLuminance(render(scene, settings, "flat scene, indirect"));
     std::printf("[ stress ] lone plane: direct %.4f, indirect %.6f\n", direct, indirect);
     EXPECT_GT(direct, 0.01);
@@ -276,8 +276,8 @@ TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight)
     renderer.setCamera(camera);
     const double inside = bench::meanLuminance(render(renderer, "inside the block", false));
     RenderSettings direct = smallSettings(32, 64);
-    direct.mode = RenderMode::Direct;
-    renderer.setShadingSettings(direct);
+    direct.shading.mode = RenderMode::Direct;
+    renderer.setShading(direct.shading);
     const double insideDirect = bench::meanLuminance(render(renderer, "inside the block, direct", false));
     std::printf("[ stress ] inside the tall block: %.5f, direct %.5f (usual view %.4f)\n", inside, insideDirect,
                 usual);

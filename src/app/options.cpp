@@ -1,0 +1,161 @@
+#include "app/options.h"
+
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "error.h"
+#include "render/presets.h"
+#include "scene/load.h"
+
+namespace vct {
+namespace {
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+std::string presetNames() {
+    std::string names;
+    for (const auto& [name, unused] : renderPresets()) names += (names.empty() ? "" : ", ") + name;
+    return names;
+}
+
+void applyPreset(const OptionValue& value, RenderSettings& settings) {
+    const std::optional<RenderSettings> preset = findRenderPreset(value.text());
+    if (!preset) throw Error("--preset must be one of " + presetNames() + ", not '" + value.text() + "'");
+    settings = *preset;
+}
+
+void applyMode(const OptionValue& value, RenderSettings& settings) {
+    const std::optional<RenderMode> mode = parseRenderMode(value.text());
+    if (!mode) throw Error("--mode must be full, direct or indirect, not '" + value.text() + "'");
+    settings.shading.mode = *mode;
+}
+
+void applyDisabled(const OptionValue& value, RenderSettings& settings) {
+    std::istringstream disabled(value.text());
+    for (std::string name; std::getline(disabled, name, ',');) {
+        if (name.empty()) continue;
+        bool known = false;
+        for (const ComponentInfo& component : componentTable()) {
+            if (name != component.option) continue;
+            settings.shading.components.*component.member = false;
+            known = true;
+        }
+        if (!known) throw Error("--disable: unknown component '" + name + "'");
+    }
+}
+
+std::string componentOptionNames() {
+    std::string names;
+    for (const ComponentInfo& component : componentTable()) names += (names.empty() ? "" : ",") + std::string(component.option);
+    return names;
+}
+
+std::vector<Option> makeSharedOptions() {
+    using S = RenderSettings;
+    using V = OptionValue;
+    return {
+        {"preset", "NAME", "start from a preset (" + presetNames() + "); the options below override it", applyPreset},
+        {"width", "W", "image width in pixels", [](const V& v, S& s) { s.image.width = v.whole(1, 16384); },
+         [](const S& s) { return std::to_string(s.image.width); }},
+        {"height", "H", "image height in pixels", [](const V& v, S& s) { s.image.height = v.whole(1, 16384); },
+         [](const S& s) { return std::to_string(s.image.height); }},
+        {"supersample", "N", "samples per pixel side, averaged over the pixel",
+         [](const V& v, S& s) { s.image.supersample = v.whole(1, 8); },
+         [](const S& s) { return std::to_string(s.image.supersample); }},
+        {"mode", "full|direct|indirect", "which light the image holds", applyMode,
+         [](const S& s) { return std::string(renderModeName(s.shading.mode)); }},
+        {"disable", "LIST", "components to switch off, comma-separated: " + componentOptionNames(), applyDisabled},
+        {"ambient", "F", "non-physical ambient light factor",
+         [](const V& v, S& s) { s.shading.ambientFactor = v.number(0.0f, 1e6f); },
+         [](const S& s) { return number(s.shading.ambientFactor); }},
+        {"voxels", "N", "voxels per side of the grid, a power of two 32..512",
+         [](const V& v, S& s) { s.resources.voxelResolution = v.whole(32, 512); },
+         [](const S& s) { return std::to_string(s.resources.voxelResolution); }},
+        {"voxel-mips", "isotropic|anisotropic", "one mip chain or six directional ones",
+         [](const V& v, S& s) {
+             if (v.text() != "isotropic" && v.text() != "anisotropic")
+                 throw Error("--voxel-mips must be isotropic or anisotropic, not '" + v.text() + "'");
+             s.resources.anisotropicVoxels = v.text() == "anisotropic";
+         },
+         [](const S& s) { return std::string(s.resources.anisotropicVoxels ? "anisotropic" : "isotropic"); }},
+        {"bounces", "1|2", "2 re-injects the light gathered by the voxels",
+         [](const V& v, S& s) { s.resources.bounces = v.whole(1, 2); },
+         [](const S& s) { return std::to_string(s.resources.bounces); }},
+        {"cones", "N", "diffuse cones", [](const V& v, S& s) { s.shading.diffuseConeCount = v.whole(1, 32); },
+         [](const S& s) { return std::to_string(s.shading.diffuseConeCount); }},
+        {"cone-aperture", "DEGREES", "full angle of each diffuse cone",
+         [](const V& v, S& s) { s.shading.diffuseConeAperture = v.number(1.0f, 120.0f); },
+         [](const S& s) { return number(s.shading.diffuseConeAperture); }},
+        {"cone-step", "F", "cone step as a fraction of its diameter",
+         [](const V& v, S& s) { s.shading.coneStep = v.number(0.05f, 4.0f); },
+         [](const S& s) { return number(s.shading.coneStep); }},
+        {"shadow-map", "N", "sun shadow-map size",
+         [](const V& v, S& s) { s.resources.sunShadowMapSize = v.whole(16, 16384); },
+         [](const S& s) { return std::to_string(s.resources.sunShadowMapSize); }},
+        {"local-shadow-map", "N", "shadow-map size of each spot light and point-light cube face",
+         [](const V& v, S& s) { s.resources.localShadowMapSize = v.whole(16, 16384); },
+         [](const S& s) { return std::to_string(s.resources.localShadowMapSize); }},
+        {"scene", "FILE|NAME", "a .gltf/.glb file or a built-in scene (default cornell):"},
+        {"camera-pos", "x,y,z", "camera position (overrides the scene's camera)"},
+        {"camera-target", "x,y,z", "the point the camera looks at"},
+        {"fov", "DEGREES", "vertical field of view"},
+        {"light-dir", "x,y,z", "direction the sun's light travels (adds a sun if the scene has none)"},
+        {"light-intensity", "E", "that sun's illuminance (default 3)"},
+        {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},
+        {"validate", "", "enable the Khronos validation layer"},
+        {"strict", "", "treat scene warnings (e.g. a missing texture) as errors"},
+        {"allowed-root", "DIR", "let the scene's URIs reach files under DIR (default: its folder)"},
+        {"gpu-timeout", "SECONDS", "longest wait for the GPU before giving up (default 120)"},
+    };
+}
+
+}  // namespace
+
+const std::vector<Option>& sharedOptions() {
+    static const std::vector<Option> options = [] {
+        std::vector<Option> rows = makeSharedOptions();
+        for (Option& row : rows)
+            if (row.name == "scene")
+                for (const std::string& name : builtinSceneNames()) row.help += " " + name;
+        return rows;
+    }();
+    return options;
+}
+
+const Option& sharedOption(const std::string& name) {
+    for (const Option& option : sharedOptions())
+        if (option.name == name) return option;
+    throw std::out_of_range("no shared option --" + name);
+}
+
+Arguments parseArguments(const std::vector<std::string>& arguments, const std::vector<Option>& options) {
+    std::set<std::string> flags = {"help"}, valued;
+    for (const Option& option : options) (option.value.empty() ? flags : valued).insert(option.name);
+    return Arguments(arguments, flags, valued);
+}
+
+std::string optionsHelp(const std::vector<Option>& options, const RenderSettings& defaults) {
+    std::string help;
+    for (const Option& option : options) {
+        std::string left = "  --" + option.name + (option.value.empty() ? "" : " " + option.value);
+        left.resize(std::max<size_t>(left.size() + 1, 27), ' ');
+        help += left + option.help;
+        if (option.show) help += " (default " + option.show(defaults) + ")";
+        help += "\n";
+    }
+    return help;
+}
+
+RenderSettings renderSettingsFromArguments(const Arguments& arguments, const std::vector<Option>& options,
+                                           RenderSettings defaults) {
+    for (const Option& option : options)
+        if (option.apply && arguments.has(option.name)) option.apply(OptionValue{arguments, option.name}, defaults);
+    return defaults;
+}
+
+}  // namespace vct
