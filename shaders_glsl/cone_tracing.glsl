@@ -10,7 +10,7 @@
 // The volume seen by a cone travelling along `direction`: isotropic, or (anisotropic voxels) the
 // three directional chains facing the direction, weighted by its squared components.
 vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
-    if (frame.counts.w == 0u) return textureLod(voxelRadiance, uvw, lod);
+    if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
     float directionalLod = max(lod - 1.0f, 0.0f);
     vec3 weight = direction * direction;
     vec4 directional =
@@ -38,11 +38,11 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
     float resolution = float(grid.resolution.x);
     float maxLod = float(grid.resolution.y - 1u);
     vec3 start = worldToGrid(grid, origin);
-    float stepFraction = frame.cone.y;
-    float maxDistance = frame.cone.z;
-    float stopOpacity = frame.coneWeights.y;
-    float falloff = frame.coneWeights.x;
-    bool skipEmpty = frame.coneCounts.y != 0u;
+    float stepFraction = frame.coneStep;
+    float maxDistance = frame.coneMaxDistance;
+    float stopOpacity = frame.coneStopOpacity;
+    float falloff = frame.aoFalloff;
+    bool skipEmpty = frame.skipEmptySpace != 0u;
 
     vec3 color = vec3(0.0f);
     float alpha = 0.0f;
@@ -81,7 +81,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
         distance += stepLength;
     }
     ConeResult result;
-    result.radiance = color / frame.coneWeights.w;
+    result.radiance = color / frame.radianceScale;
     result.occlusion = clamp(occlusion, 0.0f, 1.0f);
     return result;
 }
@@ -97,9 +97,9 @@ vec3 perpendicular(vec3 n) {
 // cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
 // irradiance is π·Σ wᵢ·Lᵢ. Returns the weighted radiance (rgb) and the weighted occlusion (a).
 vec4 traceDiffuseCones(vec3 origin, vec3 normal) {
-    uint count = max(frame.coneCounts.x, 1u);
-    float tanHalf = frame.cone.x;
-    float centreWeight = count == 1u ? 1.0f : frame.coneWeights.z;
+    uint count = max(frame.diffuseConeCount, 1u);
+    float tanHalf = frame.coneTanHalfAperture;
+    float centreWeight = count == 1u ? 1.0f : frame.diffuseCentreWeight;
     float sideWeight = count == 1u ? 0.0f : (1.0f - centreWeight) / float(count - 1u);
     float ringAngle = min(2.0f * atan(tanHalf), 1.4f);
     vec3 tangent = perpendicular(normal);

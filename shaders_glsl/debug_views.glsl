@@ -6,7 +6,7 @@
 // Marches the camera ray through the voxel volume at `mip` and returns the first voxel at
 // least half opaque: albedo, normal (mapped to 0..1) or radiance, per `view`.
 vec3 voxelView(ivec2 pixel, uint view, float mip) {
-    vec2 ndc = (vec2(pixel) + 0.5f) * frame.renderSize.zw * 2.0f - 1.0f;
+    vec2 ndc = (vec2(pixel) + 0.5f) * frame.inverseRenderSize * 2.0f - 1.0f;
     vec4 nearPoint = frame.inverseViewProjection * vec4(ndc, 0.0f, 1.0f);
     vec4 farPoint = frame.inverseViewProjection * vec4(ndc, 1.0f, 1.0f);
     vec3 origin = worldToGrid(frame.grid, nearPoint.xyz / nearPoint.w);
@@ -26,24 +26,24 @@ vec3 voxelView(ivec2 pixel, uint view, float mip) {
         if (opacity < 0.5f) continue;
         if (view == DEBUG_VOXEL_ALBEDO) return textureLod(voxelAlbedo, uvw, 0.0f).rgb;
         if (view == DEBUG_VOXEL_NORMAL) return textureLod(voxelNormal, uvw, 0.0f).xyz * 0.5f + 0.5f;
-        return radiance.rgb / (radiance.a * frame.coneWeights.w);
+        return radiance.rgb / (radiance.a * frame.radianceScale);
     }
     return vec3(0.0f);
 }
 
 vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
-    uint view = frame.coneCounts.z;
-    if (view >= DEBUG_VOXEL_ALBEDO) return voxelView(pixel, view, float(frame.coneCounts.w));
+    uint view = frame.debugView;
+    if (view >= DEBUG_VOXEL_ALBEDO) return voxelView(pixel, view, float(frame.debugVoxelMip));
     if (positionMaterial.w < 0.5f) return vec3(0.0f);
     vec3 normal = texelFetch(gNormal, pixel, 0).xyz;
     if (view == DEBUG_BASE_COLOR) return texelFetch(gBaseColor, pixel, 0).rgb;
     if (view == DEBUG_NORMAL) return normal * 0.5f + 0.5f;
     if (view == DEBUG_DEPTH) {
-        float distanceToCamera = length(positionMaterial.xyz - frame.cameraPosition.xyz);
+        float distanceToCamera = length(positionMaterial.xyz - frame.cameraPosition);
         return vec3(distanceToCamera / (frame.grid.originVoxelSize.w * float(frame.grid.resolution.x)));
     }
     // Ambient occlusion: 1 = open, 0 = fully occluded.
-    vec3 origin = positionMaterial.xyz + normal * (frame.cone.w * frame.grid.originVoxelSize.w);
+    vec3 origin = positionMaterial.xyz + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
     return vec3(1.0f - traceDiffuseCones(origin, normal).a);
 }
 

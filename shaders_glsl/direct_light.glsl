@@ -39,7 +39,7 @@ vec3 incidentLight(GpuLight light, vec3 position, out vec3 toLight, out float di
 vec3 directLight(SurfacePoint surface, uint flags) {
     vec3 radiance = vec3(0.0f);
     float NdotV = max(dot(surface.normal, surface.toViewer), 1e-4f);
-    for (uint i = 0u; i < frame.counts.x; ++i) {
+    for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
         vec3 toLight;
         float distanceToLight;

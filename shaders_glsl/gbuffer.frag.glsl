@@ -34,7 +34,7 @@ void main() {
         lengthSquared = dot(normal, normal);
     }
     normal = lengthSquared > 0.0f ? normal * inversesqrt(lengthSquared) : vec3(0.0f, 1.0f, 0.0f);
-    vec3 toCamera = frame.cameraPosition.xyz - worldPosition;
+    vec3 toCamera = frame.cameraPosition - worldPosition;
     bool frontFace = dot(normal, toCamera) >= 0.0f;
     if (!frontFace) normal = -normal;
 

@@ -1,5 +1,5 @@
 // Structs that cross the CPU/GPU boundary, declared once for C++ and GLSL.
-// Every member is a vec4, uvec4 or mat4 (or four scalars), so std140 and std430 agree with C++.
+// Members are ordered so that std140/std430 offsets equal C++'s (static_asserts in src/render/frame_constants.h).
 #ifndef VCT_GPU_TYPES_H
 #define VCT_GPU_TYPES_H
 
@@ -35,7 +35,7 @@ struct ShadowView {
     vec4 params;  // x array (0 = sun maps, 1 = local maps), y layer, z texel size at unit distance, w 1 = perspective
 };
 
-// Bits of FrameConstants.counts.z: which light components the final image contains.
+// Bits of FrameConstants.componentFlags: which light components the final image contains.
 const uint SHOW_DIRECT_DIFFUSE = 1u;
 const uint SHOW_DIRECT_SPECULAR = 2u;
 const uint SHOW_INDIRECT_DIFFUSE = 4u;
@@ -44,25 +44,41 @@ const uint SHOW_AMBIENT_OCCLUSION = 16u;
 const uint SHOW_EMISSION = 32u;
 const uint USE_SHADOWS = 64u;
 
+// The frame's constants, one uniform block (std140: every member sits at its natural offset, which
+// the C++ side checks with static_asserts).
 struct FrameConstants {
     mat4 viewProjection;
-    vec4 cameraPosition;  // xyz, w unused
-    uvec4 counts;         // x lights, y shadow views, z SHOW_* / USE_* flags, w 1 = anisotropic voxels
-    vec4 shading;         // x ambient factor, y shadow normal offset (texels), z PCF radius (texels), w unused
-    vec4 renderSize;      // width, height, 1/width, 1/height of the render target
+    mat4 inverseViewProjection;
+    VoxelGridParams grid;
+    vec3 cameraPosition;
+    uint lightCount;
+    uint shadowViewCount;
+    uint componentFlags;     // SHOW_* / USE_*
+    uint anisotropicVoxels;  // 1 = six directional mip chains
+    uint debugView;          // DEBUG_*
+    vec2 renderSize;         // of the render target, in pixels
+    vec2 inverseRenderSize;
+    float ambientFactor;
+    float shadowNormalOffset;  // texels
+    float pcfRadius;           // texels
+    float radianceScale;       // the volume stores radiance × scale to stay inside float16
 
     // Voxel cone tracing (Crassin et al. 2011). Distances are in voxels of the finest level.
-    VoxelGridParams grid;
-    vec4 cone;        // x tan(diffuse half-aperture), y step (fraction of the cone diameter),
-                      // z max distance, w start offset along the normal
-    vec4 coneWeights; // x AO distance falloff, y opacity at which a cone stops, z centre cone weight,
-                      // w radiance scale (the volume stores radiance × scale to stay inside float16)
-    uvec4 coneCounts; // x diffuse cones, y 1 = skip empty space with coarse mips, z debug view (DEBUG_*),
-                      // w mip level the voxel debug views show
-    mat4 inverseViewProjection;
+    float coneTanHalfAperture;  // of the diffuse cones
+    float coneStep;             // fraction of the cone's diameter
+    float coneMaxDistance;
+    float coneStartOffset;      // along the normal
+    float aoFalloff;            // per voxel
+    float coneStopOpacity;
+    float diffuseCentreWeight;
+    uint diffuseConeCount;
+    uint skipEmptySpace;  // 1 = march through empty space with the coarse mips
+    uint debugVoxelMip;   // the mip level the voxel debug views show
+    uint unused0;
+    uint unused1;
 };
 
-// What the shading pass shows instead of light (FrameConstants.coneCounts.z), for understanding.
+// What the shading pass shows instead of light (FrameConstants.debugView), for understanding.
 const uint DEBUG_NONE = 0u;
 const uint DEBUG_BASE_COLOR = 1u;
 const uint DEBUG_NORMAL = 2u;

@@ -40,7 +40,7 @@ void main() {
     float voxelSize = frame.grid.originVoxelSize.w;
 
     vec3 irradiance = vec3(0.0f);
-    for (uint i = 0u; i < frame.counts.x; ++i) {
+    for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
         vec3 toLight;
         float distanceToLight;
@@ -62,5 +62,5 @@ void main() {
         outgoing += albedoOpacity.rgb * traceDiffuseCones(center + normal * (2.0f * voxelSize), normal).rgb;
     }
     float opacity = albedoOpacity.a;
-    imageStore(radiance, voxel, vec4(outgoing * frame.coneWeights.w * opacity, opacity));
+    imageStore(radiance, voxel, vec4(outgoing * frame.radianceScale * opacity, opacity));
 }

@@ -27,7 +27,7 @@ layout(location = 0) out vec4 outRadiance;
 // The split of reflected energy between the two lobes uses the GGX directional albedo.
 vec3 indirectLight(SurfacePoint surface, uint flags) {
     bool wantDiffuse = (flags & SHOW_INDIRECT_DIFFUSE) != 0u;
-    bool wantAmbient = (flags & SHOW_AMBIENT_OCCLUSION) != 0u && frame.shading.x > 0.0f;
+    bool wantAmbient = (flags & SHOW_AMBIENT_OCCLUSION) != 0u && frame.ambientFactor > 0.0f;
     bool wantSpecular = (flags & SHOW_INDIRECT_SPECULAR) != 0u;
     if (!wantDiffuse && !wantAmbient && !wantSpecular) return vec3(0.0f);
 
@@ -37,13 +37,13 @@ vec3 indirectLight(SurfacePoint surface, uint flags) {
     vec3 specularAlbedo = mix(vec3(dielectricSpecular), surface.baseColor * lobe.x + lobe.y, surface.metallic);
     vec3 diffuseAlbedo = (1.0f - surface.metallic) * surface.baseColor * (1.0f - dielectricSpecular);
     // Cones start a little off the surface so they do not see the surface's own voxels.
-    vec3 origin = surface.position + surface.normal * (frame.cone.w * frame.grid.originVoxelSize.w);
+    vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
 
     vec3 radiance = vec3(0.0f);
     if (wantDiffuse || wantAmbient) {
         vec4 gathered = traceDiffuseCones(origin, surface.normal);
         if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
-        if (wantAmbient) radiance += frame.shading.x * diffuseAlbedo * (1.0f - gathered.a);
+        if (wantAmbient) radiance += frame.ambientFactor * diffuseAlbedo * (1.0f - gathered.a);
     }
     // Skip the specular cone where the material reflects (almost) nothing specularly.
     if (wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
@@ -57,7 +57,7 @@ vec3 indirectLight(SurfacePoint surface, uint flags) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 positionMaterial = texelFetch(gPosition, pixel, 0);
-    if (frame.coneCounts.z != DEBUG_NONE) {
+    if (frame.debugView != DEBUG_NONE) {
         outRadiance = vec4(debugView(pixel, positionMaterial), 1.0f);
         return;
     }
@@ -71,13 +71,13 @@ void main() {
     SurfacePoint surface;
     surface.position = positionMaterial.xyz;
     surface.normal = normalize(normalFront.xyz);
-    surface.toViewer = normalize(frame.cameraPosition.xyz - surface.position);
+    surface.toViewer = normalize(frame.cameraPosition - surface.position);
     surface.baseColor = texelFetch(gBaseColor, pixel, 0).rgb;
     surface.metallic = material.metallic;
     surface.roughness = material.roughness;
     surface.specularWeight = material.specularWeight;
 
-    uint flags = frame.counts.z;
+    uint flags = frame.componentFlags;
     vec3 radiance = directLight(surface, flags);
     if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f) radiance += material.emission.rgb;
     radiance += indirectLight(surface, flags);

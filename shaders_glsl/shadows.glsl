@@ -24,13 +24,13 @@ float sampleShadowMap(uint array, vec4 coordinate) {
 // footprint is far wider than the kernel.
 float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanceToLight, bool filtered) {
     uint viewCount = uint(light.spotShadow.w);
-    if (viewCount == 0u || (frame.counts.z & USE_SHADOWS) == 0u) return 1.0f;
+    if (viewCount == 0u || (frame.componentFlags & USE_SHADOWS) == 0u) return 1.0f;
     uint viewIndex = uint(light.spotShadow.z);
     if (viewCount == 6u) viewIndex += cubeFace(position - light.positionRange.xyz);
     ShadowView view = shadowViews[viewIndex];
 
     float texelWorld = view.params.z * (view.params.w > 0.5f ? distanceToLight : 1.0f);
-    vec3 offsetPosition = position + normal * (frame.shading.y * texelWorld);
+    vec3 offsetPosition = position + normal * (frame.shadowNormalOffset * texelWorld);
     vec4 clip = view.viewProjection * vec4(offsetPosition, 1.0f);
     if (clip.w <= 0.0f) return 1.0f;
     vec3 ndc = clip.xyz / clip.w;
@@ -40,7 +40,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     uint array = uint(view.params.x);
     if (!filtered) return sampleShadowMap(array, vec4(uv, view.params.y, ndc.z));
     vec2 texel = 1.0f / vec2(array == 0u ? textureSize(sunShadowMaps, 0).xy : textureSize(localShadowMaps, 0).xy);
-    float radius = frame.shading.z;
+    float radius = frame.pcfRadius;
     float lit = 0.0f;
     // 5×5 taps spread over ±radius texels; each tap is itself a bilinear 2×2 comparison.
     for (int y = -2; y <= 2; ++y)

@@ -8,6 +8,7 @@
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
+#include "render/frame_constants.h"
 #include "render/renderer_limits.h"
 #include "render/voxel_grid_fit.h"
 
@@ -128,19 +129,31 @@ void Renderer::writeFrameConstants() {
     local.position -= sceneOrigin_;
     constants.viewProjection = cameraMatrices(local, float(width) / float(height), sceneBounds_).viewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
-    constants.cameraPosition = glm::vec4(local.position, 1.0f);
-    constants.counts = glm::uvec4(uint32_t(shadowLayout_.lights.size()), uint32_t(shadowLayout_.views.size()),
-                                  componentFlags(effectiveComponents(settings_.shading)), settings_.resources.anisotropicVoxels ? 1u : 0u);
-    constants.shading = glm::vec4(settings_.shading.ambientFactor, settings_.shading.shadowNormalOffset, settings_.shading.pcfRadius, 0.0f);
-    constants.renderSize = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    constants.cameraPosition = local.position;
+    constants.lightCount = uint32_t(shadowLayout_.lights.size());
+    constants.shadowViewCount = uint32_t(shadowLayout_.views.size());
+    const ShadingSettings& shading = settings_.shading;
+    constants.componentFlags = componentFlags(effectiveComponents(shading));
+    constants.anisotropicVoxels = settings_.resources.anisotropicVoxels ? 1u : 0u;
+    constants.debugView = uint32_t(shading.debugView);
+    constants.renderSize = glm::vec2(float(width), float(height));
+    constants.inverseRenderSize = glm::vec2(1.0f / float(width), 1.0f / float(height));
+    constants.ambientFactor = shading.ambientFactor;
+    constants.shadowNormalOffset = shading.shadowNormalOffset;
+    constants.pcfRadius = shading.pcfRadius;
+    constants.radianceScale = radianceScale_;
     const float resolution = float(grid_.resolution.x);
     constants.grid = grid_;
-    constants.cone = glm::vec4(std::tan(glm::radians(0.5f * settings_.shading.diffuseConeAperture)), settings_.shading.coneStep,
-                               settings_.shading.coneMaxDistance * resolution, settings_.shading.coneStartOffset);
-    constants.coneWeights = glm::vec4(settings_.shading.aoFalloff / resolution, settings_.shading.coneStopOpacity,
-                                      settings_.shading.diffuseCentreWeight, radianceScale_);
-    constants.coneCounts = glm::uvec4(settings_.shading.diffuseConeCount, settings_.shading.skipEmptySpace ? 1u : 0u,
-                                      uint32_t(settings_.shading.debugView), settings_.shading.debugVoxelMip);
+    constants.coneTanHalfAperture = std::tan(glm::radians(0.5f * shading.diffuseConeAperture));
+    constants.coneStep = shading.coneStep;
+    constants.coneMaxDistance = shading.coneMaxDistance * resolution;
+    constants.coneStartOffset = shading.coneStartOffset;
+    constants.aoFalloff = shading.aoFalloff / resolution;
+    constants.coneStopOpacity = shading.coneStopOpacity;
+    constants.diffuseCentreWeight = shading.diffuseCentreWeight;
+    constants.diffuseConeCount = shading.diffuseConeCount;
+    constants.skipEmptySpace = shading.skipEmptySpace ? 1u : 0u;
+    constants.debugVoxelMip = shading.debugVoxelMip;
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
 }
 

@@ -76,10 +76,17 @@ protected:
     glsl::FrameConstants frameConstants() const {
         glsl::FrameConstants frame{};
         frame.grid = grid;
-        frame.cone = glm::vec4(std::tan(glm::radians(30.0f)), coneStep, 2.0f * kResolution, 1.0f);
-        frame.coneWeights = glm::vec4(aoFalloff, stopOpacity, 0.25f, 1.0f);  // radiance scale 1
-        frame.coneCounts = glm::uvec4(6, skipEmptySpace ? 1u : 0u, 0, 0);
-        frame.counts.w = anisotropic ? 1u : 0u;
+        frame.coneTanHalfAperture = std::tan(glm::radians(30.0f));
+        frame.coneStep = coneStep;
+        frame.coneMaxDistance = 2.0f * kResolution;
+        frame.coneStartOffset = 1.0f;
+        frame.aoFalloff = aoFalloff;
+        frame.coneStopOpacity = stopOpacity;
+        frame.diffuseCentreWeight = 0.25f;
+        frame.radianceScale = 1.0f;
+        frame.diffuseConeCount = 6;
+        frame.skipEmptySpace = skipEmptySpace ? 1u : 0u;
+        frame.anisotropicVoxels = anisotropic ? 1u : 0u;
         return frame;
     }
 
