@@ -1,7 +1,7 @@
 // Cone tracing through the pre-filtered radiance volume (Crassin et al. 2011, section 3).
 // Requires: frame (FrameConstants), voxelRadiance (sampler3D with the mip chain; rgb is
 // radiance × scale premultiplied by opacity, a is opacity) and, for anisotropic voxels, the six
-// directional chains voxelPosX … voxelNegZ (their level 0 is the grid's level 1).
+// directional chains directionalVoxels[DIRECTION_*] (their level 0 is the grid's level 1).
 #ifndef VCT_CONE_TRACING_GLSL
 #define VCT_CONE_TRACING_GLSL
 
@@ -14,12 +14,12 @@ vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
     float directionalLod = max(lod - 1.0f, 0.0f);
     vec3 weight = direction * direction;
     vec4 directional =
-        weight.x * (direction.x >= 0.0f ? textureLod(voxelPosX, uvw, directionalLod)
-                                        : textureLod(voxelNegX, uvw, directionalLod)) +
-        weight.y * (direction.y >= 0.0f ? textureLod(voxelPosY, uvw, directionalLod)
-                                        : textureLod(voxelNegY, uvw, directionalLod)) +
-        weight.z * (direction.z >= 0.0f ? textureLod(voxelPosZ, uvw, directionalLod)
-                                        : textureLod(voxelNegZ, uvw, directionalLod));
+        weight.x * (direction.x >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_X], uvw, directionalLod)
+                                        : textureLod(directionalVoxels[DIRECTION_NEG_X], uvw, directionalLod)) +
+        weight.y * (direction.y >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Y], uvw, directionalLod)
+                                        : textureLod(directionalVoxels[DIRECTION_NEG_Y], uvw, directionalLod)) +
+        weight.z * (direction.z >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Z], uvw, directionalLod)
+                                        : textureLod(directionalVoxels[DIRECTION_NEG_Z], uvw, directionalLod));
     // Below level 1 blend towards the finest (isotropic) level.
     return lod >= 1.0f ? directional : mix(textureLod(voxelRadiance, uvw, 0.0f), directional, lod);
 }

@@ -1,13 +1,14 @@
-// The six directional radiance chains of anisotropic voxels (rays along +x, −x, +y, −y, +z, −z),
-// at the bindings every pass that traces cones uses for them.
+// The six directional radiance chains of anisotropic voxels, one array binding that every pass
+// that traces cones uses: element DIRECTION_* holds the chain for rays along that direction.
 #ifndef VCT_DIRECTIONAL_VOXELS_GLSL
 #define VCT_DIRECTIONAL_VOXELS_GLSL
 
-layout(set = 0, binding = 12) uniform sampler3D voxelPosX;
-layout(set = 0, binding = 13) uniform sampler3D voxelNegX;
-layout(set = 0, binding = 14) uniform sampler3D voxelPosY;
-layout(set = 0, binding = 15) uniform sampler3D voxelNegY;
-layout(set = 0, binding = 16) uniform sampler3D voxelPosZ;
-layout(set = 0, binding = 17) uniform sampler3D voxelNegZ;
+const uint DIRECTION_POS_X = 0u;
+const uint DIRECTION_NEG_X = 1u;
+const uint DIRECTION_POS_Y = 2u;
+const uint DIRECTION_NEG_Y = 3u;
+const uint DIRECTION_POS_Z = 4u;
+const uint DIRECTION_NEG_Z = 5u;
+layout(set = 0, binding = 12) uniform sampler3D directionalVoxels[6];
 
 #endif

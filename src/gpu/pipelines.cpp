@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "gpu/spirv_reflect.h"
 #include "gpu/vk_check.h"
 
 namespace vct {
@@ -23,7 +24,7 @@ std::string spirvDirectory() {
     return std::string(VCT_SOURCE_DIR) + "/spirv";
 }
 
-VkShaderModule loadShaderModule(GpuContext& context, const std::string& name) {
+std::vector<uint32_t> loadSpirv(const std::string& name) {
     const std::string path = spirvDirectory() + "/" + name + ".spv";
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) throw Error("cannot open the shader '" + path + "' (set VCT_SPIRV_DIR to the spirv/ folder)");
@@ -33,56 +34,83 @@ VkShaderModule loadShaderModule(GpuContext& context, const std::string& name) {
     file.seekg(0);
     file.read(reinterpret_cast<char*>(code.data()), size);
     if (!file || code[0] != 0x07230203u) throw Error("the shader '" + path + "' is not SPIR-V");
+    return code;
+}
+
+static VkShaderModule createShaderModule(GpuContext& context, const std::vector<uint32_t>& code) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = size_t(size);
+    info.codeSize = code.size() * sizeof(uint32_t);
     info.pCode = code.data();
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(context.device, &info, nullptr, &module));
     return module;
 }
 
-VkDescriptorSetLayout createPushDescriptorLayout(GpuContext& context, const std::vector<Binding>& bindings) {
-    std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-    for (const Binding& binding : bindings)
-        layoutBindings.push_back({binding.binding, binding.type, binding.count, binding.stages, nullptr});
-    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-    info.bindingCount = uint32_t(layoutBindings.size());
-    info.pBindings = layoutBindings.data();
-    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
-    return layout;
+VkShaderModule loadShaderModule(GpuContext& context, const std::string& name) {
+    return createShaderModule(context, loadSpirv(name));
 }
 
-VkPipelineLayout createPipelineLayout(GpuContext& context, const std::vector<VkDescriptorSetLayout>& setLayouts,
-                                      uint32_t pushConstantBytes) {
-    const VkPushConstantRange range{VK_SHADER_STAGE_ALL, 0, pushConstantBytes};
+ShaderLayout createShaderLayout(GpuContext& context, const std::vector<std::string>& shaderNames,
+                                const std::vector<VkDescriptorSetLayout>& laterSets) {
+    std::vector<ShaderReflection> stages;
+    std::string pipelineName;
+    for (const std::string& name : shaderNames) {
+        stages.push_back(reflectShader(loadSpirv(name), name));
+        pipelineName += (pipelineName.empty() ? "" : " + ") + name;
+    }
+    const ShaderReflection merged = mergeStages(stages, pipelineName);
+    std::vector<VkDescriptorSetLayoutBinding> setZero;
+    for (const ReflectedBinding& binding : merged.bindings) {
+        if (binding.set > laterSets.size())
+            throw Error(pipelineName + ": uses descriptor set " + std::to_string(binding.set) + " but only " +
+                        std::to_string(laterSets.size() + 1) + " set layouts were given");
+        if (binding.set != 0) continue;
+        if (binding.countSpecId)
+            throw Error(pipelineName + ": set 0 binding " + std::to_string(binding.binding) +
+                        " is sized by a specialization constant, which a push-descriptor set cannot follow");
+        setZero.push_back({binding.binding, binding.type, binding.count, binding.stages, nullptr});
+    }
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    setInfo.bindingCount = uint32_t(setZero.size());
+    setInfo.pBindings = setZero.data();
+    ShaderLayout result;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &setInfo, nullptr, &result.setLayout));
+
+    std::vector<VkDescriptorSetLayout> sets = {result.setLayout};
+    sets.insert(sets.end(), laterSets.begin(), laterSets.end());
+    // One range for every stage: the passes push with VK_SHADER_STAGE_ALL.
+    const VkPushConstantRange range{VK_SHADER_STAGE_ALL, 0, merged.pushConstantBytes};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = uint32_t(setLayouts.size());
-    info.pSetLayouts = setLayouts.data();
-    info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
+    info.setLayoutCount = uint32_t(sets.size());
+    info.pSetLayouts = sets.data();
+    info.pushConstantRangeCount = merged.pushConstantBytes > 0 ? 1 : 0;
     info.pPushConstantRanges = &range;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
-    return layout;
+    const VkResult created = vkCreatePipelineLayout(context.device, &info, nullptr, &result.layout);
+    if (created != VK_SUCCESS) vkDestroyDescriptorSetLayout(context.device, result.setLayout, nullptr);
+    VK_CHECK(created);
+    return result;
 }
 
-VkPipeline createComputePipeline(GpuContext& context, VkPipelineLayout layout, const std::string& shaderName) {
+Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName) {
+    const ShaderLayout layout = createShaderLayout(context, {shaderName});
     VkShaderModule module = loadShaderModule(context, shaderName);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module;
     info.stage.pName = "main";
-    info.layout = layout;
+    info.layout = layout.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     const VkResult result = vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
     vkDestroyShaderModule(context.device, module, nullptr);
+    Pipeline owned(context, pipeline, layout.layout, layout.setLayout);  // frees the layouts if the check throws
     VK_CHECK(result);
-    return pipeline;
+    return owned;
 }
 
-VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout, const GraphicsPipelineDesc& desc) {
+static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout,
+                                         const GraphicsPipelineDesc& desc) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     std::vector<VkShaderModule> modules;
     auto addStage = [&](VkShaderStageFlagBits stage, const std::string& name) {
@@ -154,37 +182,56 @@ VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout, 
     return pipeline;
 }
 
-DescriptorPush& DescriptorPush::buffer(uint32_t binding, VkBuffer buffer, VkDescriptorType type) {
-    buffers_.at(bufferCount_) = {buffer, 0, VK_WHOLE_SIZE};
+Pipeline createGraphicsPipeline(GpuContext& context, const GraphicsPipelineDesc& desc,
+                                const std::vector<VkDescriptorSetLayout>& laterSets) {
+    std::vector<std::string> shaders = {desc.vertexShader};
+    if (!desc.fragmentShader.empty()) shaders.push_back(desc.fragmentShader);
+    const ShaderLayout layout = createShaderLayout(context, shaders, laterSets);
+    Pipeline owned(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // frees the layouts on a throw
+    owned.pipeline = createGraphicsPipeline(context, layout.layout, desc);
+    return owned;
+}
+
+VkWriteDescriptorSet& DescriptorPush::addWrite(uint32_t binding, VkDescriptorType type, uint32_t count) {
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstBinding = binding;
-    write.descriptorCount = 1;
+    write.descriptorCount = count;
     write.descriptorType = type;
-    write.pBufferInfo = &buffers_[bufferCount_++];
     writes_.push_back(write);
+    return writes_.back();
+}
+
+DescriptorPush& DescriptorPush::buffer(uint32_t binding, VkBuffer buffer, VkDescriptorType type) {
+    buffers_.at(bufferCount_) = {buffer, 0, VK_WHOLE_SIZE};
+    addWrite(binding, type, 1).pBufferInfo = &buffers_[bufferCount_++];
+    return *this;
+}
+
+DescriptorPush& DescriptorPush::buffers(uint32_t binding, const std::vector<VkBuffer>& elements) {
+    const size_t first = bufferCount_;
+    for (VkBuffer element : elements) buffers_.at(bufferCount_++) = {element, 0, VK_WHOLE_SIZE};
+    addWrite(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, uint32_t(elements.size())).pBufferInfo = &buffers_[first];
     return *this;
 }
 
 DescriptorPush& DescriptorPush::storageImage(uint32_t binding, VkImageView view) {
     images_.at(imageCount_) = {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    write.pImageInfo = &images_[imageCount_++];
-    writes_.push_back(write);
+    addWrite(binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1).pImageInfo = &images_[imageCount_++];
     return *this;
 }
 
 DescriptorPush& DescriptorPush::sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
                                              VkImageLayout layout) {
     images_.at(imageCount_) = {sampler, view, layout};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &images_[imageCount_++];
-    writes_.push_back(write);
+    addWrite(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1).pImageInfo = &images_[imageCount_++];
+    return *this;
+}
+
+DescriptorPush& DescriptorPush::sampledImages(uint32_t binding, const std::vector<VkImageView>& views,
+                                              VkSampler sampler, VkImageLayout layout) {
+    const size_t first = imageCount_;
+    for (VkImageView view : views) images_.at(imageCount_++) = {sampler, view, layout};
+    addWrite(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(views.size())).pImageInfo = &images_[first];
     return *this;
 }
 

@@ -15,23 +15,20 @@ namespace vct {
 // of the executable, else the source tree's spirv/.
 std::string spirvDirectory();
 
-// Loads spirv/NAME.spv (e.g. "gbuffer.frag"); a missing or malformed file is a vct::Error.
+// Reads spirv/NAME.spv (e.g. "gbuffer.frag"); a missing or malformed file is a vct::Error.
+std::vector<uint32_t> loadSpirv(const std::string& name);
 VkShaderModule loadShaderModule(GpuContext& context, const std::string& name);
 
-struct Binding {
-    uint32_t binding;
-    VkDescriptorType type;
-    VkShaderStageFlags stages;
-    uint32_t count = 1;
+// Bindings come from the shaders' SPIR-V (gpu/spirv_reflect.h), never from a list in C++: set 0
+// is a push-descriptor set holding every binding the stages declare, sets 1, 2, … are
+// `laterSets` (owned by the caller, e.g. the scene's texture array), and one push-constant range
+// covers the stages' push-constant blocks.
+struct ShaderLayout {
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // set 0
 };
-
-// A descriptor set layout filled by vkCmdPushDescriptorSetKHR (no pools, no set lifetimes).
-VkDescriptorSetLayout createPushDescriptorLayout(GpuContext& context, const std::vector<Binding>& bindings);
-
-VkPipelineLayout createPipelineLayout(GpuContext& context, const std::vector<VkDescriptorSetLayout>& setLayouts,
-                                      uint32_t pushConstantBytes = 0);
-
-VkPipeline createComputePipeline(GpuContext& context, VkPipelineLayout layout, const std::string& shaderName);
+ShaderLayout createShaderLayout(GpuContext& context, const std::vector<std::string>& shaderNames,
+                                const std::vector<VkDescriptorSetLayout>& laterSets = {});
 
 struct GraphicsPipelineDesc {
     std::string vertexShader;
@@ -45,9 +42,6 @@ struct GraphicsPipelineDesc {
     uint32_t specializationTextureCount = 0;
 };
 
-// A pipeline for dynamic rendering, with dynamic viewport and scissor.
-VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout, const GraphicsPipelineDesc& desc);
-
 // Collects descriptor writes for one vkCmdPushDescriptorSetKHR call.
 class DescriptorPush {
 public:
@@ -55,10 +49,15 @@ public:
     DescriptorPush& storageImage(uint32_t binding, VkImageView view);
     DescriptorPush& sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
                                  VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    // Array bindings: element i of `binding` gets item i.
+    DescriptorPush& buffers(uint32_t binding, const std::vector<VkBuffer>& buffers);
+    DescriptorPush& sampledImages(uint32_t binding, const std::vector<VkImageView>& views, VkSampler sampler,
+                                  VkImageLayout layout);
     void push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint, VkPipelineLayout layout,
               uint32_t set = 0);
 
 private:
+    VkWriteDescriptorSet& addWrite(uint32_t binding, VkDescriptorType type, uint32_t count);
     // Stable addresses: the writes point into these until push().
     std::vector<VkDescriptorBufferInfo> buffers_ = std::vector<VkDescriptorBufferInfo>(32);
     std::vector<VkDescriptorImageInfo> images_ = std::vector<VkDescriptorImageInfo>(32);
@@ -88,6 +87,13 @@ public:
 private:
     VkDevice device_ = VK_NULL_HANDLE;
 };
+
+// A compute pipeline with its layout read from the shader (createShaderLayout).
+Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName);
+// A graphics pipeline for dynamic rendering, with dynamic viewport and scissor, and its layout read
+// from its shaders.
+Pipeline createGraphicsPipeline(GpuContext& context, const GraphicsPipelineDesc& desc,
+                                const std::vector<VkDescriptorSetLayout>& laterSets = {});
 
 // A sampler destroyed with its owner.
 class Sampler {

@@ -22,11 +22,6 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     baseColor = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer base colour");
     depth = makeTarget(context, VK_FORMAT_D32_SFLOAT, width, height, "G-buffer depth");
 
-    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
-        context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}});
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout, scene.textureSetLayout}, sizeof(uint32_t));
     GraphicsPipelineDesc desc;
     desc.vertexShader = "gbuffer.vert";
     desc.fragmentShader = "gbuffer.frag";
@@ -35,7 +30,7 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     desc.depthTest = true;
     // The texture array's size is a specialization constant, so the pipeline is built per scene.
     desc.specializationTextureCount = scene.textureCount();
-    pipeline = Pipeline(context, createGraphicsPipeline(context, layout, desc), layout, setLayout);
+    pipeline = createGraphicsPipeline(context, desc, {scene.textureSetLayout});
 }
 
 void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants) {

@@ -38,26 +38,7 @@ InjectPass::InjectPass(GpuContext& context, uint32_t voxelResolution, bool aniso
         }
     }
 
-    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
-        context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                  {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
-                  {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
-                  {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
-                  {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, compute},
-                  {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {12, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {13, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {14, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                  {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute}});
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
-    pipeline = Pipeline(context, createComputePipeline(context, layout, "inject.comp"), layout, setLayout);
+    pipeline = createComputePipeline(context, "inject.comp");
 }
 
 void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
@@ -98,9 +79,8 @@ void InjectPass::dispatch(VkCommandBuffer commands, VkBuffer frameConstants, VkB
                           uint32_t gatherBounce) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     DescriptorPush push;
-    for (uint32_t direction = 0; direction < 6; ++direction)
-        push.sampledImage(12 + direction, directionalView(direction), volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL);
-    push.buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+    push.sampledImages(12, directionalViews(), volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
         .buffer(1, lights)
         .buffer(2, shadowViews)
         .sampledImage(3, shadows.sunMaps.view, shadows.compareSampler.sampler)

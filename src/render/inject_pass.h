@@ -34,10 +34,12 @@ struct InjectPass {
     Sampler volumeSampler;
     Pipeline pipeline;
 
-    // The view each of the six directional bindings gets (the isotropic volume stands in when
-    // the voxels are isotropic; the shaders then never sample it).
-    VkImageView directionalView(uint32_t direction) const {
-        return directional.empty() ? radiance.view : directional[direction].view;
+    // The six views of the directional array binding (the isotropic volume stands in when the
+    // voxels are isotropic; the shaders then never sample it).
+    std::vector<VkImageView> directionalViews() const {
+        std::vector<VkImageView> views(6, radiance.view);
+        for (size_t direction = 0; direction < directional.size(); ++direction) views[direction] = directional[direction].view;
+        return views;
     }
     bool initialized = false;
 

@@ -6,19 +6,10 @@
 
 namespace vct {
 
-MipsPass::MipsPass(GpuContext& context) : context_(context) {
-    VkDescriptorSetLayout setLayout =
-        createPushDescriptorLayout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-                                             {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
-    pipeline = Pipeline(context, createComputePipeline(context, layout, "mips.comp"), layout, setLayout);
-    VkDescriptorSetLayout directionalSetLayout =
-        createPushDescriptorLayout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-                                             {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
-    VkPipelineLayout directionalLayout = createPipelineLayout(context, {directionalSetLayout}, sizeof(uint32_t));
-    directionalPipeline = Pipeline(context, createComputePipeline(context, directionalLayout, "mips_anisotropic.comp"),
-                                   directionalLayout, directionalSetLayout);
-}
+MipsPass::MipsPass(GpuContext& context)
+    : pipeline(createComputePipeline(context, "mips.comp")),
+      directionalPipeline(createComputePipeline(context, "mips_anisotropic.comp")),
+      context_(context) {}
 
 static VkImageView mipView(const GpuImage& image, uint32_t level) {
     return image.mipViews.empty() ? image.view : image.mipViews[level];

@@ -13,11 +13,7 @@ ResolvePass::ResolvePass(GpuContext& context, uint32_t targetWidth, uint32_t tar
     desc.debugName = "resolved radiance";
     resolved = GpuImage(context, desc);
     pointSampler = Sampler(context, nearestClampSampler());
-    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
-        context, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-                  {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
-    pipeline = Pipeline(context, createComputePipeline(context, layout, "resolve.comp"), layout, setLayout);
+    pipeline = createComputePipeline(context, "resolve.comp");
 }
 
 void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled) {

@@ -15,33 +15,11 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
     pointSampler = Sampler(context, nearestClampSampler());
     volumeSampler = Sampler(context, vct::volumeSampler());
 
-    const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
-        context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment},
-                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-                  {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-                  {4, sampled, fragment},
-                  {5, sampled, fragment},
-                  {6, sampled, fragment},
-                  {7, sampled, fragment},
-                  {8, sampled, fragment},
-                  {9, sampled, fragment},
-                  {10, sampled, fragment},
-                  {11, sampled, fragment},
-                  {12, sampled, fragment},
-                  {13, sampled, fragment},
-                  {14, sampled, fragment},
-                  {15, sampled, fragment},
-                  {16, sampled, fragment},
-                  {17, sampled, fragment}});
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout});
     GraphicsPipelineDesc pipelineDesc;
     pipelineDesc.vertexShader = "fullscreen.vert";
     pipelineDesc.fragmentShader = "shade.frag";
     pipelineDesc.colorFormats = {desc.format};
-    pipeline = Pipeline(context, createGraphicsPipeline(context, layout, pipelineDesc), layout, setLayout);
+    pipeline = createGraphicsPipeline(context, pipelineDesc);
 }
 
 void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
@@ -63,10 +41,8 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
     vkCmdBeginRendering(commands, &rendering);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
     DescriptorPush push;
-    for (uint32_t direction = 0; direction < 6; ++direction)
-        push.sampledImage(12 + direction, voxelLight.directionalView(direction), volumeSampler.sampler,
-                          VK_IMAGE_LAYOUT_GENERAL);
-    push.buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+    push.sampledImages(12, voxelLight.directionalViews(), volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
         .buffer(1, inputs.materials)
         .buffer(2, inputs.lights)
         .buffer(3, inputs.shadowViews)

@@ -96,16 +96,12 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
     samplerInfo.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // 1 = the surface is not behind the stored depth
     compareSampler = Sampler(context, samplerInfo);
 
-    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
-        context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});
-    VkPipelineLayout pipelineLayout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
     GraphicsPipelineDesc desc;
     desc.vertexShader = "shadow.vert";
     desc.depthFormat = kShadowFormat;
     desc.depthTest = true;
     desc.depthBias = true;
-    pipeline = Pipeline(context, createGraphicsPipeline(context, pipelineLayout, desc), pipelineLayout, setLayout);
+    pipeline = createGraphicsPipeline(context, desc);
 }
 
 void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout,

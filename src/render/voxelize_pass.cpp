@@ -35,48 +35,6 @@ GpuImage makeVoxelImage(GpuContext& context, uint32_t resolution, VkFormat forma
     return GpuImage(context, desc);
 }
 
-// One push of plain buffers, the accumulation array and storage images (DescriptorPush has no arrays).
-void pushDescriptors(GpuContext& context, VkCommandBuffer commands, const Pipeline& pipeline,
-                     const std::vector<VkBuffer>& buffers, const std::array<Buffer, glsl::ACCUM_CHANNELS>& accumulation,
-                     const std::vector<VkImageView>& images) {
-    std::vector<VkDescriptorBufferInfo> bufferInfos;
-    for (VkBuffer buffer : buffers) bufferInfos.push_back({buffer, 0, VK_WHOLE_SIZE});
-    std::vector<VkDescriptorBufferInfo> accumulationInfos;
-    for (const Buffer& channel : accumulation) accumulationInfos.push_back({channel.buffer, 0, VK_WHOLE_SIZE});
-    std::vector<VkDescriptorImageInfo> imageInfos;
-    for (VkImageView view : images) imageInfos.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
-
-    std::vector<VkWriteDescriptorSet> writes;
-    auto add = [&](uint32_t count, VkDescriptorType type, const VkDescriptorBufferInfo* bufferInfo,
-                   const VkDescriptorImageInfo* imageInfo) {
-        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstBinding = uint32_t(writes.size());
-        write.descriptorCount = count;
-        write.descriptorType = type;
-        write.pBufferInfo = bufferInfo;
-        write.pImageInfo = imageInfo;
-        writes.push_back(write);
-    };
-    for (const VkDescriptorBufferInfo& info : bufferInfos) add(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &info, nullptr);
-    add(glsl::ACCUM_CHANNELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accumulationInfos.data(), nullptr);
-    for (const VkDescriptorImageInfo& info : imageInfos) add(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, nullptr, &info);
-    context.cmdPushDescriptorSet(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout, 0, uint32_t(writes.size()),
-                                 writes.data());
-}
-
-Pipeline makePipeline(GpuContext& context, const char* shader, uint32_t plainBuffers, uint32_t images) {
-    std::vector<Binding> bindings;
-    for (uint32_t i = 0; i < plainBuffers; ++i)
-        bindings.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
-    bindings.push_back(
-        {plainBuffers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT, glsl::ACCUM_CHANNELS});
-    for (uint32_t i = 0; i < images; ++i)
-        bindings.push_back({plainBuffers + 1 + i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT});
-    VkDescriptorSetLayout setLayout = createPushDescriptorLayout(context, bindings);
-    VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(glsl::VoxelizeParams));
-    return Pipeline(context, createComputePipeline(context, layout, shader), layout, setLayout);
-}
-
 }  // namespace
 
 uint64_t voxelizeMemoryBytes(uint32_t resolution) {
@@ -177,8 +135,14 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     for (Buffer& channel : accumulation)
         channel = Buffer(context, cube(resolution) * 4,
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
-    voxelizePipeline = makePipeline(context, "voxelize.comp", 5, 0);
-    resolvePipeline = makePipeline(context, "voxel_resolve.comp", 0, 3);
+    voxelizePipeline = createComputePipeline(context, "voxelize.comp");
+    resolvePipeline = createComputePipeline(context, "voxel_resolve.comp");
+}
+
+std::vector<VkBuffer> VoxelizePass::accumulationBuffers() const {
+    std::vector<VkBuffer> buffers;
+    for (const Buffer& channel : accumulation) buffers.push_back(channel.buffer);
+    return buffers;
 }
 
 void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
@@ -199,10 +163,14 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
 
     if (params.grid.resolution.w > 0) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
-        pushDescriptors(context_, commands, voxelizePipeline,
-                        {sceneGpu.vertices.buffer, sceneGpu.indices.buffer, sceneGpu.triangleMaterials.buffer,
-                         sceneGpu.materials.buffer, workItems.buffer},
-                        accumulation, {});
+        DescriptorPush()
+            .buffer(0, sceneGpu.vertices.buffer)
+            .buffer(1, sceneGpu.indices.buffer)
+            .buffer(2, sceneGpu.triangleMaterials.buffer)
+            .buffer(3, sceneGpu.materials.buffer)
+            .buffer(4, workItems.buffer)
+            .buffers(5, accumulationBuffers())
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout);
         vkCmdPushConstants(commands, voxelizePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
         vkCmdDispatch(commands, params.dispatch.x, workGroupRows, 1);
         memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -210,8 +178,12 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
     }
 
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.pipeline);
-    pushDescriptors(context_, commands, resolvePipeline, {}, accumulation,
-                    {albedoOpacity.view, normal.view, emission.view});
+    DescriptorPush()
+        .buffers(0, accumulationBuffers())
+        .storageImage(1, albedoOpacity.view)
+        .storageImage(2, normal.view)
+        .storageImage(3, emission.view)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.layout);
     vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
     const uint32_t groups = resolution / 4;
     vkCmdDispatch(commands, groups, groups, groups);

@@ -53,6 +53,7 @@ struct VoxelizePass {
     Pipeline resolvePipeline;
 
 private:
+    std::vector<VkBuffer> accumulationBuffers() const;
     GpuContext& context_;
 };
 

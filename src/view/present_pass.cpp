@@ -101,10 +101,9 @@ static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout la
 PresentPass::PresentPass(GpuContext& context, VkFormat swapchainFormat)
     : format(swapchainFormat), context_(context), sampler_(context, linearClampSampler()) {
     renderPass = createRenderPass(context, swapchainFormat);
-    const VkDescriptorSetLayout setLayout = createPushDescriptorLayout(
-        context, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}});
-    const VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(TonemapPush));
-    tonemap_ = Pipeline(context, createTonemapPipeline(context, layout, renderPass), layout, setLayout);
+    const ShaderLayout layout = createShaderLayout(context, {"fullscreen.vert", "tonemap.frag"});
+    tonemap_ = Pipeline(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // freed on a throw
+    tonemap_.pipeline = createTonemapPipeline(context, layout.layout, renderPass);
 }
 
 PresentPass::~PresentPass() {

@@ -210,7 +210,7 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     // inject.comp.glsl: frame, lights, shadow views, two shadow maps, four voxel images, the radiance
-    // volume, and directional_voxels.glsl's six directional volumes at 12..17.
+    // volume, and directional_voxels.glsl's array of six directional volumes at 12.
     const ShaderReflection inject = reflectFile("inject.comp");
     EXPECT_EQ(inject.stage, kCompute);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute),
@@ -220,7 +220,7 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
                                               binding(0, 4, kCombined, kCompute)};
     for (uint32_t b = 5; b <= 8; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
     expected.push_back(binding(0, 9, kCombined, kCompute));
-    for (uint32_t b = 12; b <= 17; ++b) expected.push_back(binding(0, b, kCombined, kCompute));
+    expected.push_back(binding(0, 12, kCombined, kCompute, 6));
     expectBindings(inject.bindings, expected);
     EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint gatherBounce
     EXPECT_EQ(inject.localSize[0], 4u);
@@ -233,7 +233,8 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     EXPECT_EQ(shade.stage, kFragment);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kFragment)};
     for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageBuffer, kFragment));
-    for (uint32_t b = 4; b <= 17; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
+    for (uint32_t b = 4; b <= 11; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
+    expected.push_back(binding(0, 12, kCombined, kFragment, 6));  // the directional volumes
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }

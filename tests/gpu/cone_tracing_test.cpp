@@ -99,28 +99,13 @@ protected:
         std::memcpy(probeBuffer.mapped, probes.data(), probes.size() * sizeof(Probe));
         Buffer results(context, probes.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         Sampler sampler(context, volumeSampler());
-        const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-        VkDescriptorSetLayout setLayout =
-            createPushDescriptorLayout(context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                                 {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                                 {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                                                 {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                                                 {12, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                                 {13, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                                 {14, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                                 {15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                                 {16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                                 {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute}});
-        VkPipelineLayout layout = createPipelineLayout(context, {setLayout}, sizeof(uint32_t));
-        Pipeline pipeline(context, createComputePipeline(context, layout, "cone_probe.comp"), layout, setLayout);
+        const Pipeline pipeline = createComputePipeline(context, "cone_probe.comp");
         const uint32_t count = uint32_t(probes.size());
         submitAndWait(context, [&](VkCommandBuffer commands) {
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
-            DescriptorPush push;
-            for (uint32_t direction = 0; direction < 6; ++direction)
-                push.sampledImage(12 + direction, volumes->directionalView(direction), sampler.sampler,
-                                  VK_IMAGE_LAYOUT_GENERAL);
-            push.buffer(0, frame.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            DescriptorPush()
+                .sampledImages(12, volumes->directionalViews(), sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+                .buffer(0, frame.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
                 .sampledImage(1, volume().view, sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
                 .buffer(2, probeBuffer.buffer)
                 .buffer(3, results.buffer)
