@@ -5,47 +5,27 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/shadow_pass.h"
-#include "render/voxelize_pass.h"
+#include "render/voxel_volumes.h"
 
 namespace vct {
 
 struct InjectPass {
-    InjectPass(GpuContext& context, uint32_t resolution, bool anisotropic, uint32_t bounces);
+    explicit InjectPass(GpuContext& context);
 
-    // Writes level 0 of `radiance`. Leaves it in GENERAL, visible to the mip pass.
+    // Writes level 0 of volumes.radiance from the scene voxels, visible to the mip pass after.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
-                const ShadowPass& shadows, const VoxelizePass& voxels);
+                const ShadowPass& shadows, VoxelVolumes& volumes);
     // The second bounce: injects again, adding what each voxel's cones gather from the current
     // (first-bounce, mipmapped) volume, and replaces level 0 with the result. The mips must be
     // rebuilt afterwards.
     void recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
-                      const ShadowPass& shadows, const VoxelizePass& voxels);
+                      const ShadowPass& shadows, VoxelVolumes& volumes);
 
-    // Puts the volumes in GENERAL (from UNDEFINED the first time) after earlier reads.
-    void prepareLayouts(VkCommandBuffer commands);
-
-    uint32_t resolution;
-    // RGBA16F with the full mip chain: radiance × scale premultiplied by opacity, and opacity.
-    GpuImage radiance;
-    // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
-    // down (level 0 is shared); empty when the voxels are isotropic.
-    std::vector<GpuImage> directional;
-    GpuImage bounceTarget;  // level 0 of the second bounce (only with bounces = 2)
-    Sampler volumeSampler;
     Pipeline pipeline;
-
-    // The six views of the directional array binding (the isotropic volume stands in when the
-    // voxels are isotropic; the shaders then never sample it).
-    std::vector<VkImageView> directionalViews() const {
-        std::vector<VkImageView> views(6, radiance.view);
-        for (size_t direction = 0; direction < directional.size(); ++direction) views[direction] = directional[direction].view;
-        return views;
-    }
-    bool initialized = false;
 
 private:
     void dispatch(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
-                  const ShadowPass& shadows, const VoxelizePass& voxels, VkImageView target, uint32_t gatherBounce);
+                  const ShadowPass& shadows, const VoxelVolumes& volumes, VkImageView target, uint32_t gatherBounce);
 
     GpuContext& context_;
 };

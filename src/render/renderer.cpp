@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <functional>
 
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
+#include "render/frame_plan.h"
 #include "render/frame_constants.h"
 #include "render/renderer_limits.h"
 #include "render/voxel_grid_fit.h"
@@ -21,9 +23,15 @@ double FrameStats::gpuMilliseconds() const {
 }
 
 bool FrameStats::ran(const std::string& pass) const {
-    for (const PassTime& time : passes)
-        if (time.name == pass) return true;
+    for (Pass planned : plan.passes)
+        if (passName(planned) == pass) return true;
     return false;
+}
+
+std::vector<std::string> FrameStats::skipped() const {
+    std::vector<std::string> names;
+    for (Pass pass : plan.skipped()) names.push_back(passName(pass));
+    return names;
 }
 
 // Host-visible buffers sized for `count` elements of T (at least one: Vulkan forbids empty buffers).
@@ -46,7 +54,8 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-      injectPass_(context, settings.resources.voxelResolution, settings.resources.anisotropicVoxels, settings.resources.bounces),
+      volumes_(std::make_unique<VoxelVolumes>(context, settings.resources)),
+      injectPass_(context),
       mipsPass_(context),
       timer_(context) {
     setGeometry(scene);
@@ -70,7 +79,7 @@ void Renderer::setGeometry(const Scene& scene) {
     sceneGpu_ = std::make_unique<SceneGpu>(context_, local);
     voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
     resize(settings_.image);  // the G-buffer pipeline depends on the scene's textures
-    voxelsDirty_ = true;
+    stale_.voxels = true;
     if (shadowPass_) setLights(lights_);  // shadow views are fitted to the scene's bounds
 }
 
@@ -113,12 +122,12 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     brightest.emission = glm::vec3(brightestEmission_);
     emitters.materials.push_back(brightest);
     radianceScale_ = radianceStorageScale(lights_, emitters, grid_.originVoxelSize.w);
-    shadowsDirty_ = true;
-    radianceDirty_ = true;
+    stale_.shadows = true;
+    stale_.radiance = true;
 }
 
 void Renderer::setShading(const ShadingSettings& shading) {
-    if (shading.shadowSlopeBias != settings_.shading.shadowSlopeBias) shadowsDirty_ = true;
+    if (shading.shadowSlopeBias != settings_.shading.shadowSlopeBias) stale_.shadows = true;
     settings_.shading = shading;
 }
 
@@ -161,73 +170,48 @@ FrameStats Renderer::renderFrame() {
     const auto start = std::chrono::steady_clock::now();
     FrameStats stats;
     writeFrameConstants();
-    const bool drawShadows = shadowsDirty_;
-    const bool needsVoxels = vct::needsVoxels(settings_.shading);
-    const bool voxelize = needsVoxels && voxelsDirty_;
-    const bool inject = needsVoxels && (radianceDirty_ || voxelize);
+    stats.plan = planFrame(stale_, settings_);
+    const FramePlan& plan = stats.plan;
     submitAndWait(context_, [&](VkCommandBuffer commands) {
         timer_.reset(commands);
-        if (drawShadows) {
-            timer_.begin(commands, "shadow");
+        // Each planned pass, in pipeline order, between its timestamps.
+        auto run = [&](Pass pass, const std::function<void()>& record) {
+            if (!plan.runs(pass)) return;
+            timer_.begin(commands, passName(pass));
+            record();
+            timer_.end(commands);
+        };
+        run(Pass::Shadow, [&] {
             shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_);
-            timer_.end(commands);
-        }
-        if (voxelize) {
-            timer_.begin(commands, "voxelize");
-            voxelizePass_->record(commands, *sceneGpu_);
-            timer_.end(commands);
-        }
-        if (inject) {
-            timer_.begin(commands, "inject");
+        });
+        run(Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
+        run(Pass::Inject, [&] {
             injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                               *shadowPass_, *voxelizePass_);
-            timer_.end(commands);
-            timer_.begin(commands, "mips");
-            mipsPass_.record(commands, injectPass_.radiance);
-            mipsPass_.recordDirectional(commands, injectPass_.radiance, injectPass_.directional);
-            timer_.end(commands);
-            if (settings_.resources.bounces >= 2) {
-                timer_.begin(commands, "bounce");
-                injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
-                                         shadowViewsBuffer_.buffer, *shadowPass_, *voxelizePass_);
-                mipsPass_.record(commands, injectPass_.radiance);
-                mipsPass_.recordDirectional(commands, injectPass_.radiance, injectPass_.directional);
-                timer_.end(commands);
-            }
-        } else if (!injectPass_.initialized) {
-            // Nothing voxelized or injected yet: the shading pass still binds the voxel images
-            // (without reading them), so give them a layout.
-            for (const GpuImage* image : {&voxelizePass_->albedoOpacity, &voxelizePass_->normal})
-                imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                             VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-            injectPass_.prepareLayouts(commands);
-        }
-        timer_.begin(commands, "gbuffer");
-        gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer);
-        timer_.end(commands);
-        timer_.begin(commands, "shade");
-        const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
-                                 shadowViewsBuffer_.buffer};
-        shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, injectPass_,
-                          voxelizePass_->albedoOpacity, voxelizePass_->normal);
-        timer_.end(commands);
-        timer_.begin(commands, "resolve");
-        resolvePass_->record(commands, shadePass_->radiance);
-        timer_.end(commands);
+                               *shadowPass_, *volumes_);
+        });
+        run(Pass::Mips, [&] { recordMips(commands); });
+        run(Pass::Bounce, [&] {
+            injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
+                                     shadowViewsBuffer_.buffer, *shadowPass_, *volumes_);
+            recordMips(commands);
+        });
+        run(Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
+        run(Pass::Shade, [&] {
+            const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
+                                     shadowViewsBuffer_.buffer};
+            shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
+        });
+        run(Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });
     });
-    shadowsDirty_ = false;
-    if (voxelize) voxelsDirty_ = false;
-    if (inject) radianceDirty_ = false;
-    if (!drawShadows) stats.skipped.push_back("shadow");
-    if (!voxelize) stats.skipped.push_back("voxelize");
-    if (!inject) {
-        stats.skipped.push_back("inject");
-        stats.skipped.push_back("mips");
-    }
+    stale_ = afterFrame(stale_, plan);
     stats.passes = timer_.results();
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
+}
+
+void Renderer::recordMips(VkCommandBuffer commands) {
+    mipsPass_.record(commands, volumes_->radiance);
+    mipsPass_.recordDirectional(commands, volumes_->radiance, volumes_->directional);
 }
 
 Image Renderer::readImage() {
@@ -261,18 +245,15 @@ Image Renderer::readImage() {
 namespace vct {
 
 uint64_t Renderer::deviceMemoryBytes() const {
-    uint64_t bytes = 0;
+    uint64_t bytes = volumes_->allocatedBytes();
     for (const GpuImage* image : std::initializer_list<const GpuImage*>{
              &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->depth,
-          &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps,
-          &voxelizePass_->albedoOpacity, &voxelizePass_->normal, &voxelizePass_->emission, &injectPass_.radiance})
+             &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps})
         bytes += image->memorySize;
-    for (const GpuImage& chain : injectPass_.directional) bytes += chain.memorySize;
-    bytes += injectPass_.bounceTarget.memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{&sceneGpu_->vertices, &sceneGpu_->indices,
-                                 &sceneGpu_->triangleMaterials,
-                                 &sceneGpu_->materials, &voxelizePass_->workItems})
+                                                                     &sceneGpu_->triangleMaterials,
+                                                                     &sceneGpu_->materials, &voxelizePass_->workItems})
         bytes += buffer->size;
     for (const Buffer& accumulation : voxelizePass_->accumulation) bytes += accumulation.size;
     return bytes;

@@ -1,12 +1,9 @@
-// The frame: orders the passes, decides which can be skipped, and hands back the image.
+// The frame: records the passes the frame plan (render/frame_plan.h) picks, in pipeline order,
 //
-//   shadow maps → voxelize → inject light → mips → G-buffer → full-screen shading (direct light
-//   and cone tracing) → resolve (supersample average)
+//   shadow maps → voxelize → inject light → mips (→ bounce) → G-buffer → full-screen shading
+//   (direct light and cone tracing) → resolve (supersample average)
 //
-// What did not change is not redone: shadow maps are redrawn when a light moved; the scene is
-// voxelized once per geometry; light is re-injected (and the mips rebuilt) only when a light
-// changed or the voxels were rebuilt; and none of the voxel passes run while the image shows no
-// indirect light.
+// and hands back the image. What did not change is not redone.
 #pragma once
 
 #include <memory>
@@ -17,6 +14,7 @@
 #include "gpu/resources.h"
 #include "gpu/timing.h"
 #include "io/image_io.h"
+#include "render/frame_plan.h"
 #include "render/gbuffer_pass.h"
 #include "render/inject_pass.h"
 #include "render/mips_pass.h"
@@ -25,18 +23,20 @@
 #include "render/settings.h"
 #include "render/shade_pass.h"
 #include "render/shadow_pass.h"
+#include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
 #include "scene/scene.h"
 
 namespace vct {
 
 struct FrameStats {
-    std::vector<PassTime> passes;      // GPU time of each pass that ran this frame
-    std::vector<std::string> skipped;  // passes skipped because nothing they depend on changed
-    double cpuMilliseconds = 0.0;      // recording + submission + wait, on the CPU clock
+    FramePlan plan;                // the passes this frame ran (none: the viewer reused its image)
+    std::vector<PassTime> passes;  // their GPU times, where the device has timestamp queries
+    double cpuMilliseconds = 0.0;  // recording + submission + wait, on the CPU clock
 
     double gpuMilliseconds() const;
     bool ran(const std::string& pass) const;
+    std::vector<std::string> skipped() const;  // the passes the plan left out, in pipeline order
 };
 
 class Renderer {
@@ -67,8 +67,7 @@ public:
     // centre of the scene's bounds: world = local + sceneOrigin().
     glm::vec3 sceneOrigin() const { return sceneOrigin_; }
     const glsl::VoxelGridParams& voxelGrid() const { return grid_; }  // in the local frame
-    const VoxelizePass& voxels() const { return *voxelizePass_; }
-    const GpuImage& voxelRadiance() const { return injectPass_.radiance; }
+    const VoxelVolumes& volumes() const { return *volumes_; }
     // The last frame's resolved image (RGBA32F, width × height, GENERAL layout), e.g. for a viewer
     // to tone-map onto its swapchain.
     const GpuImage& output() const { return resolvePass_->resolved; }
@@ -77,6 +76,7 @@ public:
 
 private:
     void writeFrameConstants();
+    void recordMips(VkCommandBuffer commands);
 
     GpuContext& context_;
     RenderSettings settings_;
@@ -84,9 +84,7 @@ private:
     Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
     Camera camera_;
     std::vector<Light> lights_;
-    bool shadowsDirty_ = true;
-    bool voxelsDirty_ = true;
-    bool radianceDirty_ = true;
+    StaleInputs stale_;
     float brightestEmission_ = 0.0f;
     float radianceScale_ = 1.0f;
     glsl::VoxelGridParams grid_;
@@ -97,6 +95,7 @@ private:
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<VoxelVolumes> volumes_;  // sized by the settings' resources, kept across scenes
     std::unique_ptr<VoxelizePass> voxelizePass_;
     InjectPass injectPass_;
     MipsPass mipsPass_;

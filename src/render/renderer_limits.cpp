@@ -7,13 +7,13 @@
 #include "gpu_types.h"
 #include "render/shadow_pass.h"
 #include "render/voxel_grid_fit.h"
+#include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
 
 namespace vct {
 namespace {
 
 // Bytes per texel of the formats the passes create (see each pass's constructor).
-constexpr uint64_t kRadianceTexel = 8;               // RGBA16F
 constexpr uint64_t kShadowTexel = 4;                 // D32
 constexpr uint64_t kSampleBytes = 16 + 8 + 8 + 4 + 16;  // G-buffer position, normal, base colour, depth; shade
 constexpr uint64_t kResolvedPixel = 16;              // RGBA32F
@@ -25,9 +25,6 @@ std::string bytesText(uint64_t bytes) {
     else std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
     return text;
 }
-
-// A full mip chain holds 8/7 of its base level (1 + 1/8 + 1/64 + ...), rounded up here.
-uint64_t withMips(uint64_t baseBytes) { return baseBytes + (baseBytes + 6) / 7; }
 
 uint64_t largestDeviceLocalHeap(const VkPhysicalDeviceMemoryProperties& memory) {
     uint64_t bytes = 0;
@@ -146,11 +143,8 @@ void checkSceneBuffers(const VkPhysicalDeviceLimits& limits, const std::string& 
 
 RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSettings& settings) {
     RendererMemoryEstimate estimate;
-    const uint64_t resolution = settings.resources.voxelResolution;
-    const uint64_t voxelCount = resolution * resolution * resolution;
-    estimate.voxels = voxelizeMemoryBytes(settings.resources.voxelResolution) + withMips(voxelCount * kRadianceTexel);
-    if (settings.resources.bounces >= 2) estimate.voxels += voxelCount * kRadianceTexel;
-    if (settings.resources.anisotropicVoxels) estimate.voxels += 6 * withMips(voxelCount / 8 * kRadianceTexel);
+    estimate.voxels = voxelVolumeBytes(settings.resources) +
+                      voxelizeAccumulationBytes(settings.resources.voxelResolution);
 
     const ShadowLayout layout = layoutShadows(scene.lights, scene.bounds(), settings);
     const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;

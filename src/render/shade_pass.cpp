@@ -13,7 +13,6 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
     desc.debugName = "radiance";
     radiance = GpuImage(context, desc);
     pointSampler = Sampler(context, nearestClampSampler());
-    volumeSampler = Sampler(context, vct::volumeSampler());
 
     GraphicsPipelineDesc pipelineDesc;
     pipelineDesc.vertexShader = "fullscreen.vert";
@@ -23,8 +22,7 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
 }
 
 void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
-                       const ShadowPass& shadows, const InjectPass& voxelLight, const GpuImage& voxelAlbedo,
-                       const GpuImage& voxelNormal) {
+                       const ShadowPass& shadows, const VoxelVolumes& volumes) {
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
@@ -41,7 +39,8 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
     vkCmdBeginRendering(commands, &rendering);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
     DescriptorPush push;
-    push.sampledImages(12, voxelLight.directionalViews(), volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+    const VkSampler volumeSampler = volumes.sampler.sampler;
+    push.sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
         .buffer(1, inputs.materials)
         .buffer(2, inputs.lights)
@@ -51,9 +50,9 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
         .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
         .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
         .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
-        .sampledImage(9, voxelLight.radiance.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(10, voxelAlbedo.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(11, voxelNormal.view, volumeSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
     const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, {width, height}};

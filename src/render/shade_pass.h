@@ -5,7 +5,7 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/gbuffer_pass.h"
-#include "render/inject_pass.h"
+#include "render/voxel_volumes.h"
 #include "render/shadow_pass.h"
 
 namespace vct {
@@ -22,13 +22,11 @@ struct ShadePass {
 
     // Leaves `radiance` in SHADER_READ_ONLY_OPTIMAL.
     void record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
-                const ShadowPass& shadows, const InjectPass& voxelLight, const GpuImage& voxelAlbedo,
-                const GpuImage& voxelNormal);
+                const ShadowPass& shadows, const VoxelVolumes& volumes);
 
     uint32_t width, height;
     GpuImage radiance;  // RGBA32F
     Sampler pointSampler;
-    Sampler volumeSampler;  // trilinear between mips, transparent black outside the grid
     Pipeline pipeline;
 
 private:

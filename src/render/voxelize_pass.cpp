@@ -10,9 +10,6 @@
 namespace vct {
 namespace {
 
-constexpr VkFormat kAlbedoFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat kHalfFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-constexpr uint64_t kImageBytesPerVoxel = 4 + 8 + 8;
 constexpr uint64_t kAccumulationBytesPerVoxel = 4 * glsl::ACCUM_CHANNELS;
 
 // Tiles are kept when the triangle's separation from the tile's box is at most this (grid units):
@@ -25,21 +22,14 @@ bool gridFits(uint64_t heapBytes, uint64_t maxBufferRange, uint32_t resolution) 
     return voxelizeMemoryBytes(resolution) <= heapBytes / 2 && cube(resolution) * 4 <= maxBufferRange;
 }
 
-GpuImage makeVoxelImage(GpuContext& context, uint32_t resolution, VkFormat format, const char* name) {
-    ImageDesc desc;
-    desc.type = VK_IMAGE_TYPE_3D;
-    desc.format = format;
-    desc.extent = {resolution, resolution, resolution};
-    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    desc.debugName = name;
-    return GpuImage(context, desc);
-}
-
 }  // namespace
 
 uint64_t voxelizeMemoryBytes(uint32_t resolution) {
-    return cube(resolution) * (kImageBytesPerVoxel + kAccumulationBytesPerVoxel);
+    return voxelizeAccumulationBytes(resolution) +
+           voxelVolumeBytes(ResourceSettings{.voxelResolution = resolution}, true);
 }
+
+uint64_t voxelizeAccumulationBytes(uint32_t resolution) { return cube(resolution) * kAccumulationBytesPerVoxel; }
 
 void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
                          const std::string& deviceName, uint32_t resolution) {
@@ -129,9 +119,6 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     params.dispatch.x = std::clamp(uint32_t(items.size()), 1u, rowLimit);
     workGroupRows = (uint32_t(items.size()) + params.dispatch.x - 1) / params.dispatch.x;
 
-    albedoOpacity = makeVoxelImage(context, resolution, kAlbedoFormat, "voxel albedo and opacity");
-    normal = makeVoxelImage(context, resolution, kHalfFormat, "voxel normal and count");
-    emission = makeVoxelImage(context, resolution, kHalfFormat, "voxel emission");
     for (Buffer& channel : accumulation)
         channel = Buffer(context, cube(resolution) * 4,
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
@@ -145,7 +132,7 @@ std::vector<VkBuffer> VoxelizePass::accumulationBuffers() const {
     return buffers;
 }
 
-void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
+void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, VoxelVolumes& volumes) {
     const uint32_t resolution = params.grid.resolution.x;
     // The previous frame's resolve may still read the sums: wait for it before clearing.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT,
@@ -154,12 +141,9 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    // Every texel is rewritten by the resolve, so the old contents can be discarded.
-    for (GpuImage* image : {&albedoOpacity, &normal, &emission})
-        imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_GENERAL,
-                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    // The resolve rewrites every texel of the scene voxels: earlier reads of them must be done.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE);
 
     if (params.grid.resolution.w > 0) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
@@ -180,20 +164,17 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.pipeline);
     DescriptorPush()
         .buffers(0, accumulationBuffers())
-        .storageImage(1, albedoOpacity.view)
-        .storageImage(2, normal.view)
-        .storageImage(3, emission.view)
+        .storageImage(1, volumes.albedoOpacity.view)
+        .storageImage(2, volumes.normal.view)
+        .storageImage(3, volumes.emission.view)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.layout);
     vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
     const uint32_t groups = resolution / 4;
     vkCmdDispatch(commands, groups, groups, groups);
 
-    for (GpuImage* image : {&albedoOpacity, &normal, &emission})
-        imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 }  // namespace vct

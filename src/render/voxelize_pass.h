@@ -11,13 +11,16 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/scene_gpu.h"
+#include "render/voxel_volumes.h"
 #include "scene/scene.h"
 #include "voxelize.h"
 
 namespace vct {
 
-// Bytes a grid of resolution³ voxels needs on the GPU: the three images and the accumulation buffers.
+// Bytes a grid of resolution³ voxels needs on the GPU: the scene voxels (VoxelVolumes) and the
+// accumulation buffers; and the accumulation buffers alone.
 uint64_t voxelizeMemoryBytes(uint32_t resolution);
+uint64_t voxelizeAccumulationBytes(uint32_t resolution);
 
 // Throws a vct::Error naming the largest resolution that would fit when the grid needs more than
 // half of the device's largest device-local heap (the rest is left to the scene, the frame's
@@ -38,14 +41,11 @@ struct VoxelizePass {
     // `scene` is the CPU copy of what `sceneGpu` holds: the work items are built from it, once.
     VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu, const glsl::VoxelGridParams& grid);
 
-    // Clears the sums, voxelizes, resolves. Leaves the three images in GENERAL, visible to later
-    // compute and fragment shader reads (sampled or storage).
-    void record(VkCommandBuffer commands, const SceneGpu& sceneGpu);
+    // Clears the sums, voxelizes, resolves into the scene voxels of `volumes` (albedo and opacity,
+    // normal, emission), visible to later compute and fragment shader reads (sampled or storage).
+    void record(VkCommandBuffer commands, const SceneGpu& sceneGpu, VoxelVolumes& volumes);
 
     glsl::VoxelizeParams params{};  // grid.resolution.z = triangles, .w = work items
-    GpuImage albedoOpacity;         // RGBA8 UNORM: mean linear base colour, opacity
-    GpuImage normal;                // RGBA16F: mean unit normal (not renormalized), triangle count
-    GpuImage emission;              // RGBA16F: mean emission (scene units), opacity
     std::array<Buffer, glsl::ACCUM_CHANNELS> accumulation;  // uint per voxel each, cleared every record
     Buffer workItems;                                       // uvec2 (triangle, packed tile)
     uint32_t workGroupRows = 0;  // the voxelize dispatch is params.dispatch.x × workGroupRows

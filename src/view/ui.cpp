@@ -23,7 +23,7 @@ void FrameHistory::add(float frameMs, const FrameStats& stats) {
         if (found == passAverage.end()) passAverage[pass.name] = float(pass.milliseconds);
         else found->second += 0.05f * (float(pass.milliseconds) - found->second);
     }
-    lastFrameIdle = stats.passes.empty() && !stats.skipped.empty();
+    lastFrameIdle = stats.plan.passes.empty();
     if (!lastFrameIdle) last = stats;
 }
 
@@ -195,7 +195,11 @@ void drawProfilerWindow(const ViewerState& state, const UiFacts& facts) {
         ImGui::TableSetupColumn("last drawn");
         ImGui::TableSetupColumn("average");
         ImGui::TableHeadersRow();
-        for (const auto& [name, averageMs] : history.passAverage) {
+        for (Pass pipelinePass : kPipelineOrder) {  // in the order the frame runs them
+            const std::string name = passName(pipelinePass);
+            const auto found = history.passAverage.find(name);
+            if (found == history.passAverage.end()) continue;
+            const float averageMs = found->second;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(name.c_str());

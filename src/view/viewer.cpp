@@ -404,7 +404,7 @@ UiFacts Viewer::facts() const {
     facts.renderWidth = renderer_->settings().image.width;
     facts.renderHeight = renderer_->settings().image.height;
     facts.voxelResolution = renderer_->voxelGrid().resolution.x;
-    facts.voxelMips = renderer_->voxelRadiance().desc.mipLevels;
+    facts.voxelMips = renderer_->volumes().radiance.desc.mipLevels;
     facts.deviceMemoryBytes = renderer_->deviceMemoryBytes();
     facts.triangles = scene_.triangleCount();
     facts.lights = renderer_->lights().size();
@@ -507,9 +507,9 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
 // Scripted runs log which passes each frame ran, so a test can check what a change cost.
 void Viewer::printFrameStats(const FrameStats& stats) const {
     std::printf("frame %llu: ran", static_cast<unsigned long long>(iteration_ - 1));
-    for (const PassTime& pass : stats.passes) std::printf(" %s", pass.name.c_str());
+    for (Pass pass : stats.plan.passes) std::printf(" %s", passName(pass));
     std::printf("; skipped");
-    for (const std::string& pass : stats.skipped) std::printf(" %s", pass.c_str());
+    for (const std::string& pass : stats.skipped()) std::printf(" %s", pass.c_str());
     std::printf("\n");
     std::fflush(stdout);
 }
@@ -570,9 +570,7 @@ bool Viewer::loopIteration() {
         state_.history.add(wallSeconds * 1000.0f, stats);
         if (!options_.script.empty()) printFrameStats(stats);
     } else {
-        FrameStats idle;
-        idle.skipped = {"all"};
-        state_.history.add(wallSeconds * 1000.0f, idle);
+        state_.history.add(wallSeconds * 1000.0f, FrameStats{});  // an empty plan: the image is reused
     }
 
     const bool scriptedEnd = options_.frames > 0 && framesDrawn_ + 1 == options_.frames;

@@ -12,7 +12,7 @@
 #include "gpu/readback.h"
 #include "gpu_test.h"
 #include "gpu_types.h"
-#include "render/inject_pass.h"
+#include "render/voxel_volumes.h"
 #include "render/mips_pass.h"
 #include "render/voxel_grid_fit.h"
 
@@ -33,7 +33,7 @@ protected:
     void SetUp() override {
         GpuTest::SetUp();
         // The renderer's own volumes (level 0 + mips, six directional chains); level 0 is filled here.
-        volumes = std::make_unique<InjectPass>(gpu(), kResolution, true, 1);
+        volumes = std::make_unique<VoxelVolumes>(gpu(), ResourceSettings{.voxelResolution = kResolution});
         voxels.assign(size_t(kResolution) * kResolution * kResolution, glm::vec4(0.0f));
         // The grid spans [0, 64]³ in world units: one voxel = one unit.
         grid.originVoxelSize = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
@@ -53,9 +53,10 @@ protected:
         std::memcpy(staging.mapped, halves.data(), halves.size() * 2);
         MipsPass mips(gpu());
         submitAndWait(gpu(), [&](VkCommandBuffer commands) {
-            imageBarrier(commands, volume().image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            // The volumes live in GENERAL (VoxelVolumes); a copy wants TRANSFER_DST, then back.
+            imageBarrier(commands, volume().image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, 1);
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {kResolution, kResolution, kResolution};
@@ -63,11 +64,7 @@ protected:
                                    &region);
             imageBarrier(commands, volume().image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                          VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-            for (const GpuImage& chain : volumes->directional)
-                imageBarrier(commands, chain.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                             VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, 0, 1);
             mips.record(commands, volume());
             mips.recordDirectional(commands, volume(), volumes->directional);
         });
@@ -98,15 +95,14 @@ protected:
         Buffer probeBuffer(context, probes.size() * sizeof(Probe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         std::memcpy(probeBuffer.mapped, probes.data(), probes.size() * sizeof(Probe));
         Buffer results(context, probes.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-        Sampler sampler(context, volumeSampler());
         const Pipeline pipeline = createComputePipeline(context, "cone_probe.comp");
         const uint32_t count = uint32_t(probes.size());
         submitAndWait(context, [&](VkCommandBuffer commands) {
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
             DescriptorPush()
-                .sampledImages(12, volumes->directionalViews(), sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+                .sampledImages(12, volumes->directionalViews(), volumes->sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
                 .buffer(0, frame.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-                .sampledImage(1, volume().view, sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+                .sampledImage(1, volume().view, volumes->sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
                 .buffer(2, probeBuffer.buffer)
                 .buffer(3, results.buffer)
                 .push(context, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
@@ -117,7 +113,7 @@ protected:
         return std::vector<glm::vec4>(mapped, mapped + count);
     }
 
-    std::unique_ptr<InjectPass> volumes;
+    std::unique_ptr<VoxelVolumes> volumes;
     std::vector<glm::vec4> voxels;
     glsl::VoxelGridParams grid{};
     float coneStep = 0.5f;

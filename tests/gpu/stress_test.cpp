@@ -43,7 +43,7 @@ RenderSettings smallSettings(uint32_t size = 32, uint32_t voxels = 32) {
 // stored value, which must stay inside float16 (65504).
 float expectFiniteVolume(Renderer& renderer, const char* what) {
     float largest = 0.0f;
-    std::vector<const GpuImage*> volumes = {&renderer.voxelRadiance()};
+    std::vector<const GpuImage*> volumes = {&renderer.volumes().radiance};
     for (const GpuImage* volume : volumes)
         for (uint32_t level = 0; level < volume->desc.mipLevels; ++level)
             for (const glm::vec4& voxel : readImage3D(gpu(), *volume, level, VK_IMAGE_LAYOUT_GENERAL))

@@ -82,18 +82,19 @@ VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid,
     GpuContext& context = test::gpu();
     SceneGpu sceneGpu(context, scene);
     VoxelizePass pass(context, scene, sceneGpu, grid);
+    VoxelVolumes volumes(context, ResourceSettings{.voxelResolution = grid.resolution.x, .anisotropicVoxels = false});
     GpuTimer timer(context);
     for (int run = 0; run <= timedRuns; ++run)  // run 0 warms up, the last one is timed
         submitAndWait(context, [&](VkCommandBuffer commands) {
             timer.reset(commands);
             timer.begin(commands, "voxelize");
-            pass.record(commands, sceneGpu);
+            pass.record(commands, sceneGpu, volumes);
             timer.end(commands);
         });
     VoxelImages images;
-    images.albedoOpacity = readImage3D(context, pass.albedoOpacity, 0, VK_IMAGE_LAYOUT_GENERAL);
-    images.normal = readImage3D(context, pass.normal, 0, VK_IMAGE_LAYOUT_GENERAL);
-    images.emission = readImage3D(context, pass.emission, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.albedoOpacity = readImage3D(context, volumes.albedoOpacity, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.normal = readImage3D(context, volumes.normal, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.emission = readImage3D(context, volumes.emission, 0, VK_IMAGE_LAYOUT_GENERAL);
     images.workItems = pass.params.grid.resolution.w;
     images.times = timer.results();
     return images;

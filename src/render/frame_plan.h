@@ -1,0 +1,43 @@
+// Which passes a frame runs, as data: a pure function of what is out of date and the settings,
+// tested on the CPU (tests/cpu/frame_plan_test.cpp). Shadow maps are redrawn when a light moved;
+// the scene is voxelized once per geometry; light is re-injected (and the mips rebuilt) when a
+// light changed or the voxels were rebuilt; and no voxel pass runs while the image shows nothing
+// that reads the voxels.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/settings.h"
+
+namespace vct {
+
+// In pipeline order.
+enum class Pass : uint32_t { Shadow, Voxelize, Inject, Mips, Bounce, GBuffer, Shade, Resolve };
+inline constexpr std::array<Pass, 8> kPipelineOrder = {Pass::Shadow, Pass::Voxelize, Pass::Inject,  Pass::Mips,
+                                                       Pass::Bounce, Pass::GBuffer,  Pass::Shade,   Pass::Resolve};
+// "shadow", "voxelize", … as the timings and the profiler name them.
+const char* passName(Pass pass);
+
+// What changed since the passes that depend on it last ran.
+struct StaleInputs {
+    bool shadows = true;   // lights moved, geometry changed, or the shadow bias did
+    bool voxels = true;    // geometry changed
+    bool radiance = true;  // lights changed
+    bool operator==(const StaleInputs&) const = default;
+};
+
+struct FramePlan {
+    std::vector<Pass> passes;  // in pipeline order
+    bool runs(Pass pass) const;
+    // The passes not in the plan, in pipeline order.
+    std::vector<Pass> skipped() const;
+};
+
+FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings);
+// What is still stale once `plan` has run: voxels and light stay stale while nothing reads them.
+StaleInputs afterFrame(const StaleInputs& stale, const FramePlan& plan);
+
+}  // namespace vct

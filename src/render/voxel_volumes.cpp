@@ -1,0 +1,92 @@
+#include "render/voxel_volumes.h"
+
+#include <algorithm>
+
+#include "gpu/commands.h"
+#include "render/voxel_grid_fit.h"
+
+namespace vct {
+
+std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources) {
+    const uint32_t side = resources.voxelResolution, mips = voxelMipCount(side);
+    const VkImageUsageFlags scene = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    const VkImageUsageFlags light = scene | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    const VkFormat half = VK_FORMAT_R16G16B16A16_SFLOAT;
+    std::vector<VoxelVolumeDesc> descs = {
+        {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, scene, true},
+        {"voxel normal and count", half, 8, side, 1, scene, true},
+        {"voxel emission", half, 8, side, 1, scene, true},
+        {"voxel radiance", half, 8, side, mips, light, false},
+    };
+    if (resources.anisotropicVoxels)
+        for (const char* name : {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y", "voxel radiance -y",
+                                 "voxel radiance +z", "voxel radiance -z"})
+            descs.push_back({name, half, 8, side / 2, mips - 1, light, false});
+    if (resources.bounces >= 2)
+        descs.push_back({"voxel radiance, second bounce", half, 8, side, 1,
+                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false});
+    return descs;
+}
+
+uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels) {
+    uint64_t bytes = 0;
+    for (const VoxelVolumeDesc& desc : voxelVolumeDescs(resources)) {
+        if (onlySceneVoxels && !desc.sceneVoxels) continue;
+        for (uint32_t level = 0; level < desc.mipLevels; ++level) {
+            const uint64_t side = std::max(desc.side >> level, 1u);
+            bytes += side * side * side * desc.texelBytes;
+        }
+    }
+    return bytes;
+}
+
+static GpuImage makeVolume(GpuContext& context, const VoxelVolumeDesc& volume) {
+    ImageDesc desc;
+    desc.type = VK_IMAGE_TYPE_3D;
+    desc.format = volume.format;
+    desc.extent = {volume.side, volume.side, volume.side};
+    desc.mipLevels = volume.mipLevels;
+    desc.usage = volume.usage;
+    desc.debugName = volume.name;
+    return GpuImage(context, desc);
+}
+
+VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resources)
+    : resolution(resources.voxelResolution), sampler(context, volumeSampler()) {
+    const std::vector<VoxelVolumeDesc> descs = voxelVolumeDescs(resources);
+    size_t next = 0;
+    for (GpuImage* image : {&albedoOpacity, &normal, &emission, &radiance}) *image = makeVolume(context, descs[next++]);
+    if (resources.anisotropicVoxels)
+        for (int direction = 0; direction < 6; ++direction) directional.push_back(makeVolume(context, descs[next++]));
+    if (resources.bounces >= 2) bounceTarget = makeVolume(context, descs[next++]);
+
+    // GENERAL for good: storage writes and sampled reads alike use it, so no pass changes a layout.
+    submitAndWait(context, [&](VkCommandBuffer commands) {
+        for (const GpuImage* image : images())
+            imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+    });
+}
+
+std::vector<VkImageView> VoxelVolumes::directionalViews() const {
+    std::vector<VkImageView> views(6, radiance.view);
+    for (size_t direction = 0; direction < directional.size(); ++direction) views[direction] = directional[direction].view;
+    return views;
+}
+
+std::vector<const GpuImage*> VoxelVolumes::images() const {
+    std::vector<const GpuImage*> all = {&albedoOpacity, &normal, &emission, &radiance};
+    for (const GpuImage& chain : directional) all.push_back(&chain);
+    if (bounceTarget.image != VK_NULL_HANDLE) all.push_back(&bounceTarget);
+    return all;
+}
+
+uint64_t VoxelVolumes::allocatedBytes() const {
+    uint64_t bytes = 0;
+    for (const GpuImage* image : images()) bytes += image->memorySize;
+    return bytes;
+}
+
+}  // namespace vct

@@ -1,0 +1,54 @@
+// Every 3D image of the voxel data, owned in one place with its format: what the voxelizer writes
+// (albedo and opacity, normal, emission), the light injected into it (radiance with its mip
+// chain), the six directional chains of anisotropic voxels and the second bounce's target. Each is
+// moved to GENERAL once, at creation, and stays there: the passes only order their accesses.
+#pragma once
+
+#include <vector>
+
+#include "gpu/pipelines.h"
+#include "gpu/resources.h"
+#include "render/settings.h"
+
+namespace vct {
+
+struct VoxelVolumeDesc {
+    const char* name;
+    VkFormat format;
+    uint32_t texelBytes;
+    uint32_t side;  // of level 0
+    uint32_t mipLevels;
+    VkImageUsageFlags usage;
+    bool sceneVoxels;  // written by the voxelizer (the rest hold light)
+};
+
+// The volumes `resources` call for, in the order VoxelVolumes holds them.
+std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources);
+// Their texels' bytes, every level: the renderer's one estimate of its voxel images' memory.
+uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels = false);
+
+struct VoxelVolumes {
+    VoxelVolumes(GpuContext& context, const ResourceSettings& resources);
+
+    uint32_t resolution;
+    GpuImage albedoOpacity;  // RGBA8 UNORM: mean linear base colour, opacity
+    GpuImage normal;         // RGBA16F: mean unit normal (not renormalized), triangle count
+    GpuImage emission;       // RGBA16F: mean emission (scene units), opacity
+    // RGBA16F with the full mip chain: radiance × scale premultiplied by opacity, and opacity.
+    GpuImage radiance;
+    // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
+    // down (level 0 is shared); empty when the voxels are isotropic.
+    std::vector<GpuImage> directional;
+    GpuImage bounceTarget;  // level 0 of the second bounce (bounces = 2 only)
+    Sampler sampler;        // trilinear between mips, transparent black outside the grid
+
+    // The six views of the directional array binding (the isotropic volume stands in when the
+    // voxels are isotropic; the shaders then never sample it).
+    std::vector<VkImageView> directionalViews() const;
+    // Every image above that exists, in voxelVolumeDescs() order.
+    std::vector<const GpuImage*> images() const;
+    // What the images' memory requirements asked for.
+    uint64_t allocatedBytes() const;
+};
+
+}  // namespace vct

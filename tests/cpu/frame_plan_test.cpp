@@ -1,0 +1,91 @@
+// The frame plan: which passes a frame runs for what changed and the settings (render/frame_plan.h).
+#include <gtest/gtest.h>
+
+#include "render/frame_plan.h"
+
+namespace vct {
+namespace {
+
+std::vector<std::string> names(const FramePlan& plan) {
+    std::vector<std::string> result;
+    for (Pass pass : plan.passes) result.push_back(passName(pass));
+    return result;
+}
+
+using Names = std::vector<std::string>;
+
+TEST(FramePlan, FirstFrameRunsEveryPassInPipelineOrder) {
+    EXPECT_EQ(names(planFrame(StaleInputs{}, RenderSettings{})),
+              (Names{"shadow", "voxelize", "inject", "mips", "gbuffer", "shade", "resolve"}));
+}
+
+TEST(FramePlan, NothingChangedRunsOnlyTheImagePasses) {
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
+    EXPECT_EQ(names(planFrame(nothing, RenderSettings{})), (Names{"gbuffer", "shade", "resolve"}));
+}
+
+TEST(FramePlan, AMovedLightRedrawsShadowsAndReinjectsWithoutRevoxelizing) {
+    const StaleInputs light{.shadows = true, .voxels = false, .radiance = true};
+    EXPECT_EQ(names(planFrame(light, RenderSettings{})),
+              (Names{"shadow", "inject", "mips", "gbuffer", "shade", "resolve"}));
+}
+
+TEST(FramePlan, NewVoxelsAreLitEvenWhenNoLightChanged) {
+    const StaleInputs geometry{.shadows = false, .voxels = true, .radiance = false};
+    const FramePlan plan = planFrame(geometry, RenderSettings{});
+    EXPECT_TRUE(plan.runs(Pass::Voxelize));
+    EXPECT_TRUE(plan.runs(Pass::Inject));
+    EXPECT_TRUE(plan.runs(Pass::Mips));
+}
+
+TEST(FramePlan, DirectLightRunsNoVoxelPassAndKeepsThemStale) {
+    RenderSettings direct;
+    direct.shading.mode = RenderMode::Direct;
+    const FramePlan plan = planFrame(StaleInputs{}, direct);
+    EXPECT_EQ(names(plan), (Names{"shadow", "gbuffer", "shade", "resolve"}));
+    const StaleInputs after = afterFrame(StaleInputs{}, plan);
+    EXPECT_FALSE(after.shadows);
+    EXPECT_TRUE(after.voxels) << "switching indirect light on later must voxelize then";
+    EXPECT_TRUE(after.radiance);
+}
+
+TEST(FramePlan, AmbientOcclusionReadsTheVoxelsOnlyWithAnAmbientTerm) {
+    RenderSettings settings;
+    settings.shading.components.indirectDiffuse = false;
+    settings.shading.components.indirectSpecular = false;
+    EXPECT_FALSE(planFrame(StaleInputs{}, settings).runs(Pass::Voxelize));
+    settings.shading.ambientFactor = 0.1f;
+    EXPECT_TRUE(planFrame(StaleInputs{}, settings).runs(Pass::Voxelize));
+}
+
+TEST(FramePlan, VoxelDebugViewsNeedTheVoxelsEvenInDirectMode) {
+    RenderSettings settings;
+    settings.shading.mode = RenderMode::Direct;
+    settings.shading.debugView = DebugView::VoxelAlbedo;
+    EXPECT_TRUE(planFrame(StaleInputs{}, settings).runs(Pass::Voxelize));
+    settings.shading.debugView = DebugView::Normal;
+    EXPECT_FALSE(planFrame(StaleInputs{}, settings).runs(Pass::Voxelize));
+}
+
+TEST(FramePlan, ASecondBounceFollowsEachInjection) {
+    RenderSettings settings;
+    settings.resources.bounces = 2;
+    EXPECT_EQ(names(planFrame(StaleInputs{}, settings)),
+              (Names{"shadow", "voxelize", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"}));
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::Bounce));
+}
+
+TEST(FramePlan, AfterAFullFrameNothingIsStale) {
+    const FramePlan plan = planFrame(StaleInputs{}, RenderSettings{});
+    EXPECT_EQ(afterFrame(StaleInputs{}, plan), (StaleInputs{.shadows = false, .voxels = false, .radiance = false}));
+}
+
+TEST(FramePlan, SkippedPassesAreTheRestInPipelineOrder) {
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
+    const std::vector<Pass> skipped = planFrame(nothing, RenderSettings{}).skipped();
+    EXPECT_EQ(skipped, (std::vector<Pass>{Pass::Shadow, Pass::Voxelize, Pass::Inject, Pass::Mips, Pass::Bounce}));
+}
+
+}  // namespace
+}  // namespace vct
