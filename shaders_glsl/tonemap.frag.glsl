@@ -1,8 +1,11 @@
 #version 460
 // The viewer's present pass: the renderer's linear radiance onto the swapchain image, as
-// `vct render --out x.png` writes it (src/io/image_io.cpp): × exposure, Narkowicz's ACES fit, sRGB.
+// `vct render --out x.png` writes it: shaders_glsl/tone_curve.h, shared with src/io/image_io.cpp.
 // Debug views that hold colours already (base colour, normals, depth, AO, voxel albedo and normal)
 // skip the tone curve so their values read directly.
+#extension GL_GOOGLE_include_directive : require
+#include "tone_curve.h"
+
 layout(set = 0, binding = 0) uniform sampler2D radiance;
 layout(push_constant) uniform Push {
     vec2 inverseTargetSize;  // 1 / swapchain extent
@@ -10,15 +13,6 @@ layout(push_constant) uniform Push {
     uint applyToneCurve;     // 0 = show values as they are (clamped to 0..1)
 };
 layout(location = 0) out vec4 color;
-
-float tonemapAces(float x) {
-    x = max(x, 0.0f) * 0.6f;
-    return clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
-
-float encodeSrgb(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * pow(linear, 1.0f / 2.4f) - 0.055f;
-}
 
 void main() {
     vec3 value = textureLod(radiance, gl_FragCoord.xy * inverseTargetSize, 0.0f).rgb;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "error.h"
+#include "tone_curve.h"
 
 namespace vct {
 
@@ -68,21 +69,11 @@ Image readPfm(const std::string& path) {
     return image;
 }
 
-// Narkowicz's fit of the ACES filmic curve: a familiar look, monotonic, maps [0, ∞) to [0, 1).
-static float tonemapAces(float x) {
-    x = std::max(x, 0.0f) * 0.6f;
-    return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
-
-static float encodeSrgb(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
-
 void writePng(const std::string& path, const Image& image, float exposure) {
     std::vector<uint8_t> pixels(size_t(image.width) * image.height * 3);
     for (size_t i = 0; i < pixels.size(); ++i) {
         const float value = std::isfinite(image.rgb[i]) ? image.rgb[i] : 0.0f;
-        pixels[i] = uint8_t(std::lround(255.0f * encodeSrgb(tonemapAces(value * exposure))));
+        pixels[i] = uint8_t(std::lround(255.0f * glsl::encodeSrgb(glsl::tonemapAces(value * exposure))));
     }
     std::string bytes;
     auto append = [](void* context, void* data, int size) {
