@@ -20,7 +20,7 @@ vct::Image twoByTwo() {
     vct::Image image;
     image.width = 2;
     image.height = 2;
-    image.rgb = {1, 2, 3, 4, 5, 6,      // top row
+    image.rgb = {1, 2, 3, 4,  5,  6,    // top row
                  7, 8, 9, 10, 11, 12};  // bottom row
     return image;
 }
@@ -73,7 +73,8 @@ TEST(ImageIo, TruncatedPfmIsRefused) {
     const std::string path = temporaryPath("truncated.pfm");
     {
         std::ofstream out(path, std::ios::binary);
-        out << "PF\n4 4\n-1.0\n" << "abc";
+        out << "PF\n4 4\n-1.0\n"
+            << "abc";
     }
     EXPECT_THROW(vct::readPfm(path), vct::Error);
     std::remove(path.c_str());

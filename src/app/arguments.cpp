@@ -36,8 +36,8 @@ uint32_t Arguments::unsignedInt(const std::string& name, uint32_t fallback, uint
     char* end = nullptr;
     const long long value = std::strtoll(found->second.c_str(), &end, 10);
     if (end == found->second.c_str() || *end != '\0' || value < min || value > max)
-        throw Error("--" + name + " must be a whole number from " + std::to_string(min) + " to " +
-                    std::to_string(max) + ", not '" + found->second + "'");
+        throw Error("--" + name + " must be a whole number from " + std::to_string(min) + " to " + std::to_string(max) +
+                    ", not '" + found->second + "'");
     return uint32_t(value);
 }
 

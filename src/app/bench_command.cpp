@@ -67,7 +67,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
     // Only the image size comes from the options: the matrix sets everything else.
     const RenderSettings imageSettings = renderSettingsFromArguments(arguments, rows, benchDefaults());
     const std::vector<bench::BenchSetting> matrix =
-        arguments.has("preset") ? bench::presetMatrix(arguments.text("preset", ""), imageSettings)
+        arguments.has("preset")  ? bench::presetMatrix(arguments.text("preset", ""), imageSettings)
         : arguments.has("quick") ? bench::quickMatrix(imageSettings)
                                  : bench::defaultMatrix(imageSettings);
     const std::vector<std::string> scenes =
@@ -108,12 +108,13 @@ int runBench(const std::vector<std::string>& rawArguments) {
         Scene scene = loadScene(name);
         for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
         if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
-        const std::optional<bench::References> references =
-            bench::loadReferences(referenceDir, sceneFileName(name), imageSettings.image.width, imageSettings.image.height);
+        const std::optional<bench::References> references = bench::loadReferences(
+            referenceDir, sceneFileName(name), imageSettings.image.width, imageSettings.image.height);
         if (references) info.references[scene.name] = *references;
         if (references && name == "cornell") cornellReferences = references;
-        else std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
-                         imageSettings.image.width, imageSettings.image.height, referenceDir.c_str());
+        else
+            std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
+                        imageSettings.image.width, imageSettings.image.height, referenceDir.c_str());
         for (bench::Measurement& m :
              bench::measureScene(context, scene, matrix, references ? &*references : nullptr, options)) {
             m.fullImage = {};  // not kept: only the numbers are written
@@ -126,9 +127,10 @@ int runBench(const std::vector<std::string>& rawArguments) {
     writeFileAtomically(outDir + "/bench.csv", bench::toCsv(measurements));
     writeFileAtomically(outDir + "/bench.json", bench::toJson(measurements, summary, info));
     writeFileAtomically(outDir + "/bench.svg", bench::toSvg(summary, info));
-    std::printf("\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
-                "luminance / reference) geometric means\n%s",
-                bench::summaryTable(summary).c_str());
+    std::printf(
+        "\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
+        "luminance / reference) geometric means\n%s",
+        bench::summaryTable(summary).c_str());
     std::printf("wrote %s/bench.csv, bench.json, bench.svg in %.0f s\n", outDir.c_str(), info.seconds);
     if (!arguments.has("quick") && !arguments.has("no-failure-modes")) {
         // With the preset being measured, else `balanced`.
@@ -142,10 +144,13 @@ int runBench(const std::vector<std::string>& rawArguments) {
         writeFileAtomically(outDir + "/failure_modes.json", bench::failureModesJson(report));
         std::printf("\n%swrote %s/failure_modes.json\n", bench::failureModesText(report).c_str(), outDir.c_str());
         for (const bench::ResolutionLuminance& r : report.drift)
-            if (!r.finite) throw Error("the failure-mode run gave non-finite pixels at " + std::to_string(r.voxelResolution) + "³ voxels");
+            if (!r.finite)
+                throw Error("the failure-mode run gave non-finite pixels at " + std::to_string(r.voxelResolution) +
+                            "³ voxels");
     }
     for (const bench::Measurement& m : measurements)
-        if (!m.imagesFinite) throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");
+        if (!m.imagesFinite)
+            throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");
     if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
     return 0;
 }

@@ -51,7 +51,8 @@ void applyDisabled(const OptionValue& value, RenderSettings& settings) {
 
 std::string componentOptionNames() {
     std::string names;
-    for (const ComponentInfo& component : componentTable()) names += (names.empty() ? "" : ",") + std::string(component.option);
+    for (const ComponentInfo& component : componentTable())
+        names += (names.empty() ? "" : ",") + std::string(component.option);
     return names;
 }
 

@@ -47,11 +47,12 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const Image image = renderer.readImage();
     writeImage(outPath, image, exposure);
 
-    for (const PassTime& pass : stats.passes) std::printf("  %-10s %8.3f ms GPU\n", pass.name.c_str(), pass.milliseconds);
+    for (const PassTime& pass : stats.passes)
+        std::printf("  %-10s %8.3f ms GPU\n", pass.name.c_str(), pass.milliseconds);
     for (const std::string& pass : stats.skipped()) std::printf("  %-10s  skipped\n", pass.c_str());
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width,
-                image.height, renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());
+    std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width, image.height,
+                renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());
     if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
     return 0;
 }

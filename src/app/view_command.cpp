@@ -17,8 +17,9 @@ namespace vct {
 #ifndef VCT_WITH_VIEWER
 
 int runView(const std::vector<std::string>&) {
-    throw Error("this vct was built without the viewer: it needs GLFW 3.3 and Dear ImGui "
-                "(Debian: libglfw3-dev libimgui-dev); install them and build again");
+    throw Error(
+        "this vct was built without the viewer: it needs GLFW 3.3 and Dear ImGui "
+        "(Debian: libglfw3-dev libimgui-dev); install them and build again");
 }
 
 #else

@@ -66,12 +66,12 @@ Scene makeTwoRoomScene(float wallX) {
 
     // The outer shell spans x −1…1, y 0…1, z 0…1 whatever wallX is, so the voxel grid is fixed and
     // wallX alone says where the wall falls inside its voxels.
-    addQuad(scene, {{{-1, 0, 0}, {1, 0, 0}, {1, 0, 1}, {-1, 0, 1}}}, {0, 1, 0}, 0);  // floor
-    addQuad(scene, {{{-1, 1, 0}, {1, 1, 0}, {1, 1, 1}, {-1, 1, 1}}}, {0, -1, 0}, 0);  // ceiling
-    addQuad(scene, {{{-1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 1, 0}}}, {0, 0, 1}, 0);   // back
-    addQuad(scene, {{{-1, 0, 1}, {1, 0, 1}, {1, 1, 1}, {-1, 1, 1}}}, {0, 0, -1}, 0);  // front
+    addQuad(scene, {{{-1, 0, 0}, {1, 0, 0}, {1, 0, 1}, {-1, 0, 1}}}, {0, 1, 0}, 0);    // floor
+    addQuad(scene, {{{-1, 1, 0}, {1, 1, 0}, {1, 1, 1}, {-1, 1, 1}}}, {0, -1, 0}, 0);   // ceiling
+    addQuad(scene, {{{-1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 1, 0}}}, {0, 0, 1}, 0);    // back
+    addQuad(scene, {{{-1, 0, 1}, {1, 0, 1}, {1, 1, 1}, {-1, 1, 1}}}, {0, 0, -1}, 0);   // front
     addQuad(scene, {{{-1, 0, 0}, {-1, 1, 0}, {-1, 1, 1}, {-1, 0, 1}}}, {1, 0, 0}, 0);  // lit room's end
-    addQuad(scene, {{{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}}, {-1, 0, 0}, 0);    // dark room's end
+    addQuad(scene, {{{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}}, {-1, 0, 0}, 0);     // dark room's end
     // The shared wall: one quad of zero thickness, reflecting on both sides like every surface.
     addQuad(scene, {{{wallX, 0, 0}, {wallX, 1, 0}, {wallX, 1, 1}, {wallX, 0, 1}}}, {-1, 0, 0}, 0);
 

@@ -37,7 +37,8 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     report.setting = settingLabel(settings);
 
     // The two rooms span 2 m along x, so the fitted grid's voxel is 2 m / (resolution − 2).
-    const float voxel = fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.resources.voxelResolution).originVoxelSize.w;
+    const float voxel =
+        fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.resources.voxelResolution).originVoxelSize.w;
     for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
         report.leaks.push_back({offset, measureLightLeak(context, settings, offset * voxel)});
 
@@ -59,14 +60,16 @@ std::string failureModesText(const FailureModeReport& report) {
                        double(leak.wallOffsetVoxels), leak.measurement.leakRatio());
     for (const ResolutionLuminance& r : report.drift) {
         text += format("  Cornell indirect at %3u³: mean luminance %.4f", r.voxelResolution, r.meanLuminance);
-        if (report.driftReference > 0.0) text += format(" (%.3f × path-traced)", r.meanLuminance / report.driftReference);
+        if (report.driftReference > 0.0)
+            text += format(" (%.3f × path-traced)", r.meanLuminance / report.driftReference);
         text += r.finite ? "\n" : "  NON-FINITE PIXELS\n";
     }
     text += format("  spread over resolutions (max − min) / mean: %.3f\n", spread(report.drift));
-    text += format("  flicker, 1 mm steps (relative L1 change): full camera %.4f light %.4f, indirect camera %.4f "
-                   "light %.4f\n",
-                   report.flickerFull.cameraChange, report.flickerFull.lightChange,
-                   report.flickerIndirect.cameraChange, report.flickerIndirect.lightChange);
+    text += format(
+        "  flicker, 1 mm steps (relative L1 change): full camera %.4f light %.4f, indirect camera %.4f "
+        "light %.4f\n",
+        report.flickerFull.cameraChange, report.flickerFull.lightChange, report.flickerIndirect.cameraChange,
+        report.flickerIndirect.lightChange);
     return text;
 }
 
@@ -79,13 +82,16 @@ std::string failureModesJson(const FailureModeReport& report) {
                 ", \"dark_room\": " + jsonNumber(leak.measurement.darkRoomLuminance) +
                 ", \"ratio\": " + jsonNumber(leak.measurement.leakRatio()) + "}";
     }
-    json += "\n  ],\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect\", \"reference_luminance\": " +
-            jsonNumber(report.driftReference) + ", \"spread\": " + jsonNumber(spread(report.drift)) +
-            ",\n    \"resolutions\": [";
+    json +=
+        "\n  ],\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect\", "
+        "\"reference_luminance\": " +
+        jsonNumber(report.driftReference) + ", \"spread\": " + jsonNumber(spread(report.drift)) +
+        ",\n    \"resolutions\": [";
     for (size_t i = 0; i < report.drift.size(); ++i) {
         const ResolutionLuminance& r = report.drift[i];
         json += std::string(i ? "," : "") + "\n      {\"voxels\": " + std::to_string(r.voxelResolution) +
-                ", \"luminance\": " + jsonNumber(r.meanLuminance) + ", \"finite\": " + (r.finite ? "true" : "false") + "}";
+                ", \"luminance\": " + jsonNumber(r.meanLuminance) + ", \"finite\": " + (r.finite ? "true" : "false") +
+                "}";
     }
     json += "\n    ]\n  },\n  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": " +
             jsonNumber(report.flickerFull.cameraChange) + ", \"light\": " + jsonNumber(report.flickerFull.lightChange) +

@@ -19,8 +19,8 @@ struct FailureModeReport {
         LeakMeasurement measurement;
     };
     std::vector<Leak> leaks;
-    std::vector<ResolutionLuminance> drift;  // Cornell box, indirect light
-    double driftReference = -1.0;            // the path tracer's indirect mean luminance; −1 = none
+    std::vector<ResolutionLuminance> drift;           // Cornell box, indirect light
+    double driftReference = -1.0;                     // the path tracer's indirect mean luminance; −1 = none
     FlickerMeasurement flickerFull, flickerIndirect;  // 1 mm camera and light steps, Cornell box
 };
 

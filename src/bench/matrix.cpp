@@ -41,7 +41,8 @@ void addPresets(std::vector<BenchSetting>& matrix, const RenderSettings& imageSe
 std::string settingLabel(const RenderSettings& s) {
     char text[128];
     std::snprintf(text, sizeof text, "v%u c%u a%g s%g %s b%u", s.resources.voxelResolution, s.shading.diffuseConeCount,
-                  double(s.shading.diffuseConeAperture), double(s.shading.coneStep), s.resources.anisotropicVoxels ? "aniso" : "iso", s.resources.bounces);
+                  double(s.shading.diffuseConeAperture), double(s.shading.coneStep),
+                  s.resources.anisotropicVoxels ? "aniso" : "iso", s.resources.bounces);
     std::string label = text;
     if (s.image.supersample != 1) label += " ss" + std::to_string(s.image.supersample);
     if (s.resources.sunShadowMapSize != 2048) label += " sm" + std::to_string(s.resources.sunShadowMapSize);
@@ -74,8 +75,10 @@ std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {
         variant({.voxelResolution = 32, .sunShadowMapSize = sun},
                 {.diffuseConeCount = 1, .diffuseConeAperture = 40.0f, .coneStep = 1.0f}),
         variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}),
-        variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeCount = 1, .diffuseConeAperture = 40.0f}),
-        variant({.voxelResolution = 128, .sunShadowMapSize = sun}, {.diffuseConeCount = 9, .diffuseConeAperture = 40.0f}),
+        variant({.voxelResolution = 64, .sunShadowMapSize = sun},
+                {.diffuseConeCount = 1, .diffuseConeAperture = 40.0f}),
+        variant({.voxelResolution = 128, .sunShadowMapSize = sun},
+                {.diffuseConeCount = 9, .diffuseConeAperture = 40.0f}),
         // 2×2 samples; a finer sun shadow map
         variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}, 2),
         variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}),

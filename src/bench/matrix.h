@@ -10,8 +10,8 @@
 namespace vct::bench {
 
 struct BenchSetting {
-    std::string label;     // short, e.g. "v64 c6 a60 s0.5 aniso b1"
-    std::string preset;    // the preset this setting is, or empty
+    std::string label;   // short, e.g. "v64 c6 a60 s0.5 aniso b1"
+    std::string preset;  // the preset this setting is, or empty
     RenderSettings settings;
 };
 

@@ -68,8 +68,8 @@ std::optional<References> loadReferences(const std::string& directory, const std
     References references;
     references.direct = readPfm(base + "-direct.pfm");
     references.indirect = readPfm(base + "-indirect.pfm");
-    if (references.direct.width != width || references.direct.height != height ||
-        references.indirect.width != width || references.indirect.height != height)
+    if (references.direct.width != width || references.direct.height != height || references.indirect.width != width ||
+        references.indirect.height != height)
         return std::nullopt;
     references.full = std::filesystem::exists(base + "-full.pfm") ? readPfm(base + "-full.pfm")
                                                                   : addImages(references.direct, references.indirect);
@@ -80,8 +80,9 @@ std::optional<References> loadReferences(const std::string& directory, const std
     return references;
 }
 
-std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene, const std::vector<BenchSetting>& settings,
-                                      const References* references, const MeasureOptions& options) {
+std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
+                                      const std::vector<BenchSetting>& settings, const References* references,
+                                      const MeasureOptions& options) {
     // Settings that share a Renderer run one after another; results go back in the caller's order.
     std::vector<size_t> order(settings.size());
     std::iota(order.begin(), order.end(), size_t(0));
@@ -146,9 +147,9 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene, c
 
         m.imagesFinite = finite(m.fullImage) && finite(direct) && finite(indirect);
         if (references) {
-            m.errors = ModeErrors{compareImages(m.fullImage, references->full),
-                                  compareImages(direct, references->direct),
-                                  compareImages(indirect, references->indirect)};
+            m.errors =
+                ModeErrors{compareImages(m.fullImage, references->full), compareImages(direct, references->direct),
+                           compareImages(indirect, references->indirect)};
         }
         if (options.onMeasured) options.onMeasured(m);
     }

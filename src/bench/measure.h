@@ -53,13 +53,13 @@ struct ModeErrors {
 struct Measurement {
     std::string scene;
     BenchSetting setting;
-    FrameTiming staticFrame;        // nothing changed
-    FrameTiming lightChangeFrame;   // a light changed: shadow maps, injection, mips and shading
+    FrameTiming staticFrame;       // nothing changed
+    FrameTiming lightChangeFrame;  // a light changed: shadow maps, injection, mips and shading
     double voxelizeMilliseconds = 0.0;
     uint64_t deviceMemoryBytes = 0;
-    bool imagesFinite = true;       // no NaN or Inf in the full, direct or indirect image
+    bool imagesFinite = true;  // no NaN or Inf in the full, direct or indirect image
     std::optional<ModeErrors> errors;
-    Image fullImage;                // what the static frames showed
+    Image fullImage;  // what the static frames showed
 };
 
 struct MeasureOptions {
@@ -69,7 +69,8 @@ struct MeasureOptions {
 };
 
 // Measurements in the order of `settings`.
-std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene, const std::vector<BenchSetting>& settings,
-                                      const References* references, const MeasureOptions& options);
+std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
+                                      const std::vector<BenchSetting>& settings, const References* references,
+                                      const MeasureOptions& options);
 
 }  // namespace vct::bench

@@ -12,8 +12,8 @@ namespace {
 void requireSameSize(const Image& a, const Image& b, const char* what) {
     if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size())
         throw Error(std::string(what) + ": the images differ in size (" + std::to_string(a.width) + "x" +
-                    std::to_string(a.height) + " against " + std::to_string(b.width) + "x" +
-                    std::to_string(b.height) + ")");
+                    std::to_string(a.height) + " against " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+                    ")");
 }
 
 }  // namespace

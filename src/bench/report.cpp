@@ -122,12 +122,14 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
     csv << "\n";
     for (const Measurement& m : measurements) {
         const RenderSettings& s = m.setting.settings;
-        csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << "," << s.resources.voxelResolution << ","
-            << s.shading.diffuseConeCount << "," << number(s.shading.diffuseConeAperture) << "," << number(s.shading.coneStep) << ","
-            << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << s.resources.bounces << "," << s.image.supersample << ","
-            << s.resources.sunShadowMapSize << "," << number(m.staticFrame.gpuMilliseconds) << ","
-            << number(m.staticFrame.cpuMilliseconds) << "," << number(m.lightChangeFrame.gpuMilliseconds) << ","
-            << number(m.lightChangeFrame.cpuMilliseconds) << "," << number(m.voxelizeMilliseconds) << ","
+        csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << ","
+            << s.resources.voxelResolution << "," << s.shading.diffuseConeCount << ","
+            << number(s.shading.diffuseConeAperture) << "," << number(s.shading.coneStep) << ","
+            << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << s.resources.bounces << ","
+            << s.image.supersample << "," << s.resources.sunShadowMapSize << ","
+            << number(m.staticFrame.gpuMilliseconds) << "," << number(m.staticFrame.cpuMilliseconds) << ","
+            << number(m.lightChangeFrame.gpuMilliseconds) << "," << number(m.lightChangeFrame.cpuMilliseconds) << ","
+            << number(m.voxelizeMilliseconds) << ","
             << number(m.lightChangeFrame.gpuMilliseconds + m.voxelizeMilliseconds) << ","
             << number(double(m.deviceMemoryBytes) / (1024.0 * 1024.0)) << "," << (m.imagesFinite ? 1 : 0);
         for (int mode = 0; mode < 3; ++mode) {
@@ -166,21 +168,23 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
         const RenderSettings& s = m.setting.settings;
         json << (i ? ",\n    " : "\n    ") << "{\"scene\": " << jsonString(m.scene)
              << ", \"setting\": " << jsonString(m.setting.label) << ", \"preset\": " << jsonString(m.setting.preset)
-             << ",\n     \"settings\": {\"voxels\": " << s.resources.voxelResolution << ", \"cones\": " << s.shading.diffuseConeCount
-             << ", \"aperture_deg\": " << jsonNumber(s.shading.diffuseConeAperture) << ", \"step\": " << jsonNumber(s.shading.coneStep)
-             << ", \"anisotropic\": " << (s.resources.anisotropicVoxels ? "true" : "false") << ", \"bounces\": " << s.resources.bounces
-             << ", \"supersample\": " << s.image.supersample << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
+             << ",\n     \"settings\": {\"voxels\": " << s.resources.voxelResolution
+             << ", \"cones\": " << s.shading.diffuseConeCount
+             << ", \"aperture_deg\": " << jsonNumber(s.shading.diffuseConeAperture)
+             << ", \"step\": " << jsonNumber(s.shading.coneStep)
+             << ", \"anisotropic\": " << (s.resources.anisotropicVoxels ? "true" : "false")
+             << ", \"bounces\": " << s.resources.bounces << ", \"supersample\": " << s.image.supersample
+             << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
              << "},\n     \"static\": " << jsonTiming(m.staticFrame)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
              << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds)
              << ", \"device_memory_bytes\": " << m.deviceMemoryBytes
              << ", \"finite\": " << (m.imagesFinite ? "true" : "false") << ",\n     \"error\": ";
         if (m.errors)
-            json << "{\"full\": " << jsonError(m.errors->full) << ",\n               \"direct\": "
-                 << jsonError(m.errors->direct) << ",\n               \"indirect\": " << jsonError(m.errors->indirect)
-                 << "}}";
-        else
-            json << "null}";
+            json << "{\"full\": " << jsonError(m.errors->full)
+                 << ",\n               \"direct\": " << jsonError(m.errors->direct)
+                 << ",\n               \"indirect\": " << jsonError(m.errors->indirect) << "}}";
+        else json << "null}";
     }
     json << "\n  ],\n  \"summary\": [";
     for (size_t i = 0; i < summary.size(); ++i) {
@@ -188,7 +192,8 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
         json << (i ? ",\n    " : "\n    ") << "{\"setting\": " << jsonString(s.label)
              << ", \"preset\": " << jsonString(s.preset) << ", \"static_gpu_ms\": " << jsonNumber(s.staticMilliseconds)
              << ", \"light_change_gpu_ms\": " << jsonNumber(s.lightChangeMilliseconds)
-             << ", \"device_mb\": " << jsonNumber(s.deviceMegabytes) << ", \"relmse_full\": " << jsonNumber(s.relMseFull)
+             << ", \"device_mb\": " << jsonNumber(s.deviceMegabytes)
+             << ", \"relmse_full\": " << jsonNumber(s.relMseFull)
              << ", \"relmse_direct\": " << jsonNumber(s.relMseDirect)
              << ", \"relmse_indirect\": " << jsonNumber(s.relMseIndirect)
              << ", \"luminance_ratio_indirect\": " << jsonNumber(s.luminanceRatioIndirect)
@@ -201,12 +206,13 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
 
 std::string toSvg(const std::vector<SettingSummary>& summary, const RunInfo& info) {
     std::vector<PlotPoint> points;
-    for (const SettingSummary& s : summary) points.push_back({s.label, s.staticMilliseconds, s.relMseFull, s.onFront, s.preset});
+    for (const SettingSummary& s : summary)
+        points.push_back({s.label, s.staticMilliseconds, s.relMseFull, s.onFront, s.preset});
     char note[256];
-    std::snprintf(note, sizeof note, "%s, %ux%u, median of %u frames; times: mean, relMSE: geometric mean over %zu scene(s)",
+    std::snprintf(note, sizeof note,
+                  "%s, %ux%u, median of %u frames; times: mean, relMSE: geometric mean over %zu scene(s)",
                   info.device.c_str(), info.width, info.height, info.frames, info.references.size());
-    return plotErrorAgainstTime(points, {"vct bench: error against frame time",
-                                         "GPU time of a static frame, ms (log)",
+    return plotErrorAgainstTime(points, {"vct bench: error against frame time", "GPU time of a static frame, ms (log)",
                                          "relMSE of full light against the path tracer (log)", note});
 }
 

@@ -15,13 +15,13 @@ namespace vct::bench {
 // else's (light leaking in the sun room) does not decide the front alone.
 struct SettingSummary {
     std::string label, preset;
-    double staticMilliseconds = 0.0;       // mean of the static frame's GPU time
-    double lightChangeMilliseconds = 0.0;  // ... of the frame after a light change
-    double deviceMegabytes = 0.0;          // the largest over scenes
+    double staticMilliseconds = 0.0;                                    // mean of the static frame's GPU time
+    double lightChangeMilliseconds = 0.0;                               // ... of the frame after a light change
+    double deviceMegabytes = 0.0;                                       // the largest over scenes
     double relMseFull = 0.0, relMseDirect = 0.0, relMseIndirect = 0.0;  // geometric means
-    double luminanceRatioIndirect = 0.0;   // geometric mean of indirect luminance / reference
+    double luminanceRatioIndirect = 0.0;  // geometric mean of indirect luminance / reference
     size_t scenesWithReference = 0;
-    bool onFront = false;                  // Pareto-optimal in (staticMilliseconds, relMseFull)
+    bool onFront = false;  // Pareto-optimal in (staticMilliseconds, relMseFull)
 };
 
 struct RunInfo {

@@ -78,15 +78,16 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
                 if (axis.fraction(value) > 1.0 + 1e-9) continue;
                 const bool major = step == 1.0;
                 const double at = horizontal ? py(value) : px(value);
-                svg << "<line " << (horizontal ? "x1=\"" + number(kLeft) + "\" x2=\"" + number(kLeft + plotWidth) +
-                                                     "\" y1=\"" + number(at) + "\" y2=\"" + number(at)
-                                               : "y1=\"" + number(kTop) + "\" y2=\"" + number(kTop + plotHeight) +
-                                                     "\" x1=\"" + number(at) + "\" x2=\"" + number(at))
+                svg << "<line "
+                    << (horizontal ? "x1=\"" + number(kLeft) + "\" x2=\"" + number(kLeft + plotWidth) + "\" y1=\"" +
+                                         number(at) + "\" y2=\"" + number(at)
+                                   : "y1=\"" + number(kTop) + "\" y2=\"" + number(kTop + plotHeight) + "\" x1=\"" +
+                                         number(at) + "\" x2=\"" + number(at))
                     << "\" stroke=\"" << (major ? "#bbb" : "#e4e4e4") << "\"/>\n";
                 if (!major && !labelAll) continue;
                 if (horizontal)
-                    svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << at + 4 << "\" text-anchor=\"end\">" << number(value)
-                        << "</text>\n";
+                    svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << at + 4 << "\" text-anchor=\"end\">"
+                        << number(value) << "</text>\n";
                 else
                     svg << "<text x=\"" << at << "\" y=\"" << kTop + plotHeight + 18 << "\" text-anchor=\"middle\">"
                         << number(value) << "</text>\n";
@@ -126,16 +127,20 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
         const std::string fill = preset ? "#1f77b4" : p.onFront ? "#d62728" : "#888";
         const std::string stroke = p.onFront ? "#d62728" : "black";
         const std::string id = std::to_string(i + 1);
-        svg << "<g><title>" << escapeXml(p.label) << ": " << number(p.x) << ", " << number(p.y) << "</title><circle cx=\""
-            << number(px(p.x)) << "\" cy=\"" << number(py(p.y)) << "\" r=\"" << (preset ? 7 : 4) << "\" fill=\"" << fill
-            << "\"" << (preset ? " stroke=\"" + stroke + "\" stroke-width=\"2\"" : "") << "/></g>\n";
-        svg << "<text x=\"" << number(px(p.x) + (preset ? 9 : 6)) << "\" y=\"" << number(py(p.y) - 5) << "\" font-size=\""
-            << (preset ? 13 : 11) << "\" fill=\"" << (preset ? "#1f77b4" : "#444") << "\""
-            << (preset ? " font-weight=\"bold\"" : "") << ">" << escapeXml(preset ? id + " " + p.preset : id) << "</text>\n";
+        svg << "<g><title>" << escapeXml(p.label) << ": " << number(p.x) << ", " << number(p.y)
+            << "</title><circle cx=\"" << number(px(p.x)) << "\" cy=\"" << number(py(p.y)) << "\" r=\""
+            << (preset ? 7 : 4) << "\" fill=\"" << fill << "\""
+            << (preset ? " stroke=\"" + stroke + "\" stroke-width=\"2\"" : "") << "/></g>\n";
+        svg << "<text x=\"" << number(px(p.x) + (preset ? 9 : 6)) << "\" y=\"" << number(py(p.y) - 5)
+            << "\" font-size=\"" << (preset ? 13 : 11) << "\" fill=\"" << (preset ? "#1f77b4" : "#444") << "\""
+            << (preset ? " font-weight=\"bold\"" : "") << ">" << escapeXml(preset ? id + " " + p.preset : id)
+            << "</text>\n";
         svg << "<text x=\"" << keyX << "\" y=\"" << kTop + 22 + 16 * double(i) << "\" fill=\""
-            << (preset ? "#1f77b4" : p.onFront ? "#d62728" : "#444") << "\"" << (preset ? " font-weight=\"bold\"" : "")
-            << ">" << id << "  " << escapeXml(p.label) << (preset ? "  (" + escapeXml(p.preset) + ")" : "")
-            << (p.onFront ? "  *" : "") << "</text>\n";
+            << (preset      ? "#1f77b4"
+                : p.onFront ? "#d62728"
+                            : "#444")
+            << "\"" << (preset ? " font-weight=\"bold\"" : "") << ">" << id << "  " << escapeXml(p.label)
+            << (preset ? "  (" + escapeXml(p.preset) + ")" : "") << (p.onFront ? "  *" : "") << "</text>\n";
     }
 
     // Legend, in the plot's top right corner.
@@ -147,7 +152,8 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
         << "<circle cx=\"" << lx << "\" cy=\"" << ly + 17 << "\" r=\"4\" fill=\"#d62728\"/><text x=\"" << lx + 10
         << "\" y=\"" << ly + 21 << "\">on the Pareto front (*)</text>\n"
         << "<circle cx=\"" << lx << "\" cy=\"" << ly + 34 << "\" r=\"6\" fill=\"#1f77b4\" stroke=\"#d62728\" "
-        << "stroke-width=\"2\"/><text x=\"" << lx + 10 << "\" y=\"" << ly + 38 << "\">preset (red ring: on the front)</text>\n"
+        << "stroke-width=\"2\"/><text x=\"" << lx + 10 << "\" y=\"" << ly + 38
+        << "\">preset (red ring: on the front)</text>\n"
         << "</svg>\n";
     return svg.str();
 }

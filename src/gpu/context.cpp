@@ -42,8 +42,7 @@ std::string missingRequirement(VkPhysicalDevice device, bool swapchain) {
     if (!features13.synchronization2) return "it lacks synchronization2";
     if (!features13.maintenance4) return "it lacks maintenance4";
     if (!features.features.fragmentStoresAndAtomics) return "it lacks fragmentStoresAndAtomics";
-    if (!features.features.shaderStorageImageWriteWithoutFormat)
-        return "it lacks shaderStorageImageWriteWithoutFormat";
+    if (!features.features.shaderStorageImageWriteWithoutFormat) return "it lacks shaderStorageImageWriteWithoutFormat";
     if (!hasDeviceExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)) return "it lacks VK_KHR_push_descriptor";
     if (swapchain && !hasDeviceExtension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "it lacks VK_KHR_swapchain";
     return {};
@@ -88,7 +87,8 @@ void GpuContext::create(const ContextOptions& options) {
     std::vector<const char*> extensions = options.instanceExtensions;
     if (options.validation) {
         if (!hasLayer("VK_LAYER_KHRONOS_validation"))
-            throw Error("the Vulkan validation layer is not installed (Debian: apt-get install vulkan-validationlayers)");
+            throw Error(
+                "the Vulkan validation layer is not installed (Debian: apt-get install vulkan-validationlayers)");
         layers.push_back("VK_LAYER_KHRONOS_validation");
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     }

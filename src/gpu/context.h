@@ -16,10 +16,10 @@
 namespace vct {
 
 struct ContextOptions {
-    bool validation = false;                       // enable VK_LAYER_KHRONOS_validation
-    std::string deviceName;                        // substring of the device to use; empty = choose
-    std::vector<const char*> instanceExtensions;   // e.g. the surface extensions a window needs
-    bool swapchain = false;                        // enable VK_KHR_swapchain on the device
+    bool validation = false;                      // enable VK_LAYER_KHRONOS_validation
+    std::string deviceName;                       // substring of the device to use; empty = choose
+    std::vector<const char*> instanceExtensions;  // e.g. the surface extensions a window needs
+    bool swapchain = false;                       // enable VK_KHR_swapchain on the device
 };
 
 class GpuContext {
@@ -61,9 +61,8 @@ private:
     std::vector<std::string> messages_;
 
     static VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                          VkDebugUtilsMessageTypeFlagsEXT types,
-                                                          const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                          void* self);
+                                                         VkDebugUtilsMessageTypeFlagsEXT types,
+                                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
 };
 
 }  // namespace vct

@@ -148,8 +148,8 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
     depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
     for (auto& blend : blends)
-        blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                               VK_COLOR_COMPONENT_A_BIT;
+        blend.colorWriteMask =
+            VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = uint32_t(blends.size());
     blend.pAttachments = blends.data();

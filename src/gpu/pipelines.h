@@ -45,7 +45,8 @@ struct GraphicsPipelineDesc {
 // Collects descriptor writes for one vkCmdPushDescriptorSetKHR call.
 class DescriptorPush {
 public:
-    DescriptorPush& buffer(uint32_t binding, VkBuffer buffer, VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    DescriptorPush& buffer(uint32_t binding, VkBuffer buffer,
+                           VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     DescriptorPush& storageImage(uint32_t binding, VkImageView view);
     DescriptorPush& sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
                                  VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

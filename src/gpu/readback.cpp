@@ -13,14 +13,10 @@ namespace {
 
 uint32_t texelBytes(VkFormat format) {
     switch (format) {
-        case VK_FORMAT_R8G8B8A8_UNORM:
-            return 4;
-        case VK_FORMAT_R16G16B16A16_SFLOAT:
-            return 8;
-        case VK_FORMAT_R32G32B32A32_SFLOAT:
-            return 16;
-        default:
-            throw Error("readImage3D cannot read format " + std::to_string(int(format)));
+        case VK_FORMAT_R8G8B8A8_UNORM: return 4;
+        case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
+        case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+        default: throw Error("readImage3D cannot read format " + std::to_string(int(format)));
     }
 }
 

@@ -44,9 +44,9 @@ Buffer::Buffer(GpuContext& context, VkDeviceSize bufferSize, VkBufferUsageFlags 
     VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer));
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device_, buffer, &requirements);
-    const VkMemoryPropertyFlags properties = hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                              VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                                                        : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    const VkMemoryPropertyFlags properties =
+        hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     memory_ = allocate(context, requirements, properties, "a buffer");
     VK_CHECK(vkBindBufferMemory(device_, buffer, memory_, 0));
     if (hostVisible) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped));
@@ -124,9 +124,9 @@ GpuImage::GpuImage(GpuContext& context, const ImageDesc& imageDesc) : desc(image
     memory_ = allocate(context, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, desc.debugName);
     VK_CHECK(vkBindImageMemory(device_, image, memory_, 0));
 
-    const VkImageViewType wholeType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D
+    const VkImageViewType wholeType = desc.type == VK_IMAGE_TYPE_3D       ? VK_IMAGE_VIEW_TYPE_3D
                                       : desc.layers > 1 || desc.arrayView ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
-                                                                     : VK_IMAGE_VIEW_TYPE_2D;
+                                                                          : VK_IMAGE_VIEW_TYPE_2D;
     view = createView(device_, image, desc, wholeType, aspect, 0, desc.mipLevels, 0, desc.layers);
     if (desc.mipLevels > 1)
         for (uint32_t mip = 0; mip < desc.mipLevels; ++mip)

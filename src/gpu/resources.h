@@ -51,9 +51,9 @@ public:
     GpuImage& operator=(GpuImage&& other) noexcept;
 
     VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;             // all mips and layers
-    std::vector<VkImageView> mipViews;             // one per mip level (3D images, for compute writes)
-    std::vector<VkImageView> layerViews;           // one per layer (array images, for rendering into)
+    VkImageView view = VK_NULL_HANDLE;    // all mips and layers
+    std::vector<VkImageView> mipViews;    // one per mip level (3D images, for compute writes)
+    std::vector<VkImageView> layerViews;  // one per layer (array images, for rendering into)
     ImageDesc desc;
     VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
     VkDeviceSize memorySize = 0;

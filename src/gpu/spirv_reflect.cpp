@@ -12,24 +12,50 @@ namespace {
 constexpr uint32_t kMagic = 0x07230203u;
 constexpr uint32_t kHeaderWords = 5;
 enum Op : uint32_t {
-    OpEntryPoint = 15, OpExecutionMode = 16, OpTypeBool = 20, OpTypeInt = 21, OpTypeFloat = 22, OpTypeVector = 23,
-    OpTypeMatrix = 24, OpTypeImage = 25, OpTypeSampler = 26, OpTypeSampledImage = 27, OpTypeArray = 28,
-    OpTypeRuntimeArray = 29, OpTypeStruct = 30, OpTypePointer = 32, OpConstant = 43, OpSpecConstant = 50,
-    OpVariable = 59, OpDecorate = 71, OpMemberDecorate = 72, OpExecutionModeId = 331,
+    OpEntryPoint = 15,
+    OpExecutionMode = 16,
+    OpTypeBool = 20,
+    OpTypeInt = 21,
+    OpTypeFloat = 22,
+    OpTypeVector = 23,
+    OpTypeMatrix = 24,
+    OpTypeImage = 25,
+    OpTypeSampler = 26,
+    OpTypeSampledImage = 27,
+    OpTypeArray = 28,
+    OpTypeRuntimeArray = 29,
+    OpTypeStruct = 30,
+    OpTypePointer = 32,
+    OpConstant = 43,
+    OpSpecConstant = 50,
+    OpVariable = 59,
+    OpDecorate = 71,
+    OpMemberDecorate = 72,
+    OpExecutionModeId = 331,
 };
 enum Decoration : uint32_t {
-    SpecId = 1, Block = 2, BufferBlock = 3, RowMajor = 4, ArrayStride = 6, MatrixStride = 7, Binding = 33,
-    DescriptorSet = 34, Offset = 35,
+    SpecId = 1,
+    Block = 2,
+    BufferBlock = 3,
+    RowMajor = 4,
+    ArrayStride = 6,
+    MatrixStride = 7,
+    Binding = 33,
+    DescriptorSet = 34,
+    Offset = 35,
 };
 enum StorageClass : uint32_t { UniformConstant = 0, Uniform = 2, PushConstant = 9, StorageBuffer = 12 };
 constexpr uint32_t kDimBuffer = 5, kDimSubpassData = 6;
 constexpr uint32_t kLocalSize = 17, kLocalSizeId = 38;  // execution modes
 // Execution models 0..5: vertex, tessellation control and evaluation, geometry, fragment, compute.
-constexpr VkShaderStageFlagBits kStages[] = {
-    VK_SHADER_STAGE_VERTEX_BIT, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
-    VK_SHADER_STAGE_GEOMETRY_BIT, VK_SHADER_STAGE_FRAGMENT_BIT, VK_SHADER_STAGE_COMPUTE_BIT};
-constexpr const char* kStageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry",
-                                       "fragment", "compute"};
+constexpr VkShaderStageFlagBits kStages[] = {VK_SHADER_STAGE_VERTEX_BIT,
+                                             VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
+                                             VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
+                                             VK_SHADER_STAGE_GEOMETRY_BIT,
+                                             VK_SHADER_STAGE_FRAGMENT_BIT,
+                                             VK_SHADER_STAGE_COMPUTE_BIT};
+constexpr const char* kStageNames[] = {
+    "vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment", "compute"};
 // Deeper nesting than this is taken for a type that contains itself (invalid, but it must not overflow the stack).
 constexpr int kMaxTypeDepth = 32;
 
@@ -51,16 +77,16 @@ struct Id {
 
 const char* typeName(VkDescriptorType type) {
     switch (type) {
-    case VK_DESCRIPTOR_TYPE_SAMPLER: return "sampler";
-    case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "combined image sampler";
-    case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "sampled image";
-    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
-    case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "uniform texel buffer";
-    case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER: return "storage texel buffer";
-    case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "uniform buffer";
-    case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
-    case VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT: return "input attachment";
-    default: return "descriptor of unknown type";
+        case VK_DESCRIPTOR_TYPE_SAMPLER: return "sampler";
+        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "combined image sampler";
+        case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "sampled image";
+        case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
+        case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "uniform texel buffer";
+        case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER: return "storage texel buffer";
+        case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "uniform buffer";
+        case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
+        case VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT: return "input attachment";
+        default: return "descriptor of unknown type";
     }
 }
 
@@ -129,51 +155,54 @@ struct Module {
         if (depth > kMaxTypeDepth) fail("a push-constant type nests deeper than " + std::to_string(kMaxTypeDepth));
         const Id& t = defined(typeId);
         switch (t.opcode) {
-        case OpTypeInt:
-        case OpTypeFloat: return operand(t, 2) / 8;
-        case OpTypeVector: return operand(t, 3) * sizeOf(operand(t, 2), layout, depth + 1);
-        case OpTypeMatrix:  // column-major: columns × stride; row-major: rows (the column's components) × stride
-            if (layout.matrixStride == 0) fail("a push-constant matrix has no MatrixStride decoration");
-            return (layout.rowMajor ? operand(defined(operand(t, 2)), 3) : operand(t, 3)) * layout.matrixStride;
-        case OpTypeArray:
-            if (!t.arrayStride) fail("a push-constant array has no ArrayStride decoration");
-            return value(operand(t, 3)) * *t.arrayStride;
-        case OpTypeStruct: {
-            uint32_t end = 0;
-            for (uint32_t i = 0; i + 2 < t.wordCount; ++i) {
-                const MemberLayout member = i < t.memberLayouts.size() ? t.memberLayouts[i] : MemberLayout{};
-                end = std::max(end, member.offset + sizeOf(t.words[i + 2], member, depth + 1));
+            case OpTypeInt:
+            case OpTypeFloat: return operand(t, 2) / 8;
+            case OpTypeVector: return operand(t, 3) * sizeOf(operand(t, 2), layout, depth + 1);
+            case OpTypeMatrix:  // column-major: columns × stride; row-major: rows (the column's components) × stride
+                if (layout.matrixStride == 0) fail("a push-constant matrix has no MatrixStride decoration");
+                return (layout.rowMajor ? operand(defined(operand(t, 2)), 3) : operand(t, 3)) * layout.matrixStride;
+            case OpTypeArray:
+                if (!t.arrayStride) fail("a push-constant array has no ArrayStride decoration");
+                return value(operand(t, 3)) * *t.arrayStride;
+            case OpTypeStruct: {
+                uint32_t end = 0;
+                for (uint32_t i = 0; i + 2 < t.wordCount; ++i) {
+                    const MemberLayout member = i < t.memberLayouts.size() ? t.memberLayouts[i] : MemberLayout{};
+                    end = std::max(end, member.offset + sizeOf(t.words[i + 2], member, depth + 1));
+                }
+                return end;
             }
-            return end;
-        }
-        default: fail("push constants hold a type of opcode " + std::to_string(t.opcode) + ", which has no size");
+            default: fail("push constants hold a type of opcode " + std::to_string(t.opcode) + ", which has no size");
         }
     }
 
     VkDescriptorType descriptorType(const Id& t, uint32_t storageClass, const std::string& where) {
         switch (t.opcode) {
-        case OpTypeStruct:
-            if (storageClass == Uniform && t.block) return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-            if ((storageClass == Uniform && t.bufferBlock) || (storageClass == StorageBuffer && t.block))
-                return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            fail(where + " is a struct that is neither a Block nor a BufferBlock");
-        case OpTypeSampledImage: {
-            const Id& image = defined(operand(t, 2));
-            return operand(image, 3) == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
-                                                   : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        }
-        case OpTypeImage: {  // operands: sampled type, Dim, Depth, Arrayed, MS, Sampled, format
-            const uint32_t dim = operand(t, 3), sampled = operand(t, 7);
-            if (dim == kDimSubpassData) return VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
-            if (sampled == 1)
-                return dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-            if (sampled == 2)
-                return dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-            fail(where + " is an image that is neither sampled nor storage (Sampled " + std::to_string(sampled) + ")");
-        }
-        case OpTypeSampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
-        case OpTypeRuntimeArray: fail(where + " is a runtime-sized array, which is not supported");
-        default: fail(where + " has a descriptor type of opcode " + std::to_string(t.opcode) + ", not supported");
+            case OpTypeStruct:
+                if (storageClass == Uniform && t.block) return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+                if ((storageClass == Uniform && t.bufferBlock) || (storageClass == StorageBuffer && t.block))
+                    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+                fail(where + " is a struct that is neither a Block nor a BufferBlock");
+            case OpTypeSampledImage: {
+                const Id& image = defined(operand(t, 2));
+                return operand(image, 3) == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                                       : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            }
+            case OpTypeImage: {  // operands: sampled type, Dim, Depth, Arrayed, MS, Sampled, format
+                const uint32_t dim = operand(t, 3), sampled = operand(t, 7);
+                if (dim == kDimSubpassData) return VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
+                if (sampled == 1)
+                    return dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                             : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+                if (sampled == 2)
+                    return dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER
+                                             : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+                fail(where + " is an image that is neither sampled nor storage (Sampled " + std::to_string(sampled) +
+                     ")");
+            }
+            case OpTypeSampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
+            case OpTypeRuntimeArray: fail(where + " is a runtime-sized array, which is not supported");
+            default: fail(where + " has a descriptor type of opcode " + std::to_string(t.opcode) + ", not supported");
         }
     }
 };
@@ -207,52 +236,56 @@ ShaderReflection reflectShader(const std::vector<uint32_t>& words, const std::st
             id.wordCount = wordCount;
         };
         switch (opcode) {
-        case OpEntryPoint:
-            if (arg(1) >= std::size(kStages)) bad("has execution model " + std::to_string(arg(1)) + ", not supported");
-            result.stage |= kStages[arg(1)];
-            break;
-        case OpExecutionMode:
-            if (arg(2) == kLocalSize)
-                for (uint32_t axis = 0; axis < 3; ++axis) result.localSize[axis] = arg(3 + axis);
-            break;
-        case OpExecutionModeId:  // glslang writes this for SPIR-V 1.6: the sizes are constants, defined later
-            if (arg(2) == kLocalSizeId)
-                for (uint32_t axis = 0; axis < 3; ++axis) localSizeIds[axis] = arg(3 + axis);
-            break;
-        case OpDecorate: {
-            Id& target = module.at(arg(1));
-            switch (arg(2)) {
-            case DescriptorSet: target.set = arg(3); break;
-            case Binding: target.binding = arg(3); break;
-            case SpecId: target.specId = arg(3); break;
-            case ArrayStride: target.arrayStride = arg(3); break;
-            case Block: target.block = true; break;
-            case BufferBlock: target.bufferBlock = true; break;
+            case OpEntryPoint:
+                if (arg(1) >= std::size(kStages))
+                    bad("has execution model " + std::to_string(arg(1)) + ", not supported");
+                result.stage |= kStages[arg(1)];
+                break;
+            case OpExecutionMode:
+                if (arg(2) == kLocalSize)
+                    for (uint32_t axis = 0; axis < 3; ++axis) result.localSize[axis] = arg(3 + axis);
+                break;
+            case OpExecutionModeId:  // glslang writes this for SPIR-V 1.6: the sizes are constants, defined later
+                if (arg(2) == kLocalSizeId)
+                    for (uint32_t axis = 0; axis < 3; ++axis) localSizeIds[axis] = arg(3 + axis);
+                break;
+            case OpDecorate: {
+                Id& target = module.at(arg(1));
+                switch (arg(2)) {
+                    case DescriptorSet: target.set = arg(3); break;
+                    case Binding: target.binding = arg(3); break;
+                    case SpecId: target.specId = arg(3); break;
+                    case ArrayStride: target.arrayStride = arg(3); break;
+                    case Block: target.block = true; break;
+                    case BufferBlock: target.bufferBlock = true; break;
+                }
+                break;
             }
-            break;
-        }
-        case OpMemberDecorate: {
-            Id& target = module.at(arg(1));
-            const uint32_t member = arg(2);
-            if (member >= words.size()) bad("decorates member " + std::to_string(member) + " of a struct");
-            if (member >= target.memberLayouts.size()) target.memberLayouts.resize(member + 1);
-            if (arg(3) == Offset) target.memberLayouts[member].offset = arg(4);
-            if (arg(3) == MatrixStride) target.memberLayouts[member].matrixStride = arg(4);
-            if (arg(3) == RowMajor) target.memberLayouts[member].rowMajor = true;
-            break;
-        }
-        case OpTypeBool: case OpTypeInt: case OpTypeFloat: case OpTypeVector: case OpTypeMatrix: case OpTypeImage:
-        case OpTypeSampler: case OpTypeSampledImage: case OpTypeArray: case OpTypeRuntimeArray: case OpTypeStruct:
-        case OpTypePointer:
-            define(1);
-            break;
-        case OpVariable:
-            variables.push_back(arg(2));
-            [[fallthrough]];
-        case OpConstant:
-        case OpSpecConstant:
-            define(2);
-            break;
+            case OpMemberDecorate: {
+                Id& target = module.at(arg(1));
+                const uint32_t member = arg(2);
+                if (member >= words.size()) bad("decorates member " + std::to_string(member) + " of a struct");
+                if (member >= target.memberLayouts.size()) target.memberLayouts.resize(member + 1);
+                if (arg(3) == Offset) target.memberLayouts[member].offset = arg(4);
+                if (arg(3) == MatrixStride) target.memberLayouts[member].matrixStride = arg(4);
+                if (arg(3) == RowMajor) target.memberLayouts[member].rowMajor = true;
+                break;
+            }
+            case OpTypeBool:
+            case OpTypeInt:
+            case OpTypeFloat:
+            case OpTypeVector:
+            case OpTypeMatrix:
+            case OpTypeImage:
+            case OpTypeSampler:
+            case OpTypeSampledImage:
+            case OpTypeArray:
+            case OpTypeRuntimeArray:
+            case OpTypeStruct:
+            case OpTypePointer: define(1); break;
+            case OpVariable: variables.push_back(arg(2)); [[fallthrough]];
+            case OpConstant:
+            case OpSpecConstant: define(2); break;
         }
         at += wordCount;
     }

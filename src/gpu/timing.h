@@ -22,7 +22,7 @@ public:
     GpuTimer(const GpuTimer&) = delete;
     GpuTimer& operator=(const GpuTimer&) = delete;
 
-    void reset(VkCommandBuffer commands);                        // start of a frame's command buffer
+    void reset(VkCommandBuffer commands);  // start of a frame's command buffer
     void begin(VkCommandBuffer commands, const std::string& pass);
     void end(VkCommandBuffer commands);
     std::vector<PassTime> results();  // after the commands completed; empty without timestamp support

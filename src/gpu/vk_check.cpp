@@ -5,8 +5,7 @@ namespace vct {
 const char* vkResultName(VkResult result) {
     switch (result) {
 #define VCT_RESULT_CASE(name) \
-    case name:                \
-        return #name;
+    case name: return #name;
         VCT_RESULT_CASE(VK_SUCCESS)
         VCT_RESULT_CASE(VK_NOT_READY)
         VCT_RESULT_CASE(VK_TIMEOUT)
@@ -28,14 +27,13 @@ const char* vkResultName(VkResult result) {
         VCT_RESULT_CASE(VK_ERROR_OUT_OF_DATE_KHR)
         VCT_RESULT_CASE(VK_SUBOPTIMAL_KHR)
 #undef VCT_RESULT_CASE
-        default:
-            return "VkResult(unknown)";
+        default: return "VkResult(unknown)";
     }
 }
 
 void throwVkError(VkResult result, const char* call, const char* file, int line) {
-    std::string message = std::string(call) + " failed with " + vkResultName(result) + " (" + file + ":" +
-                          std::to_string(line) + ")";
+    std::string message =
+        std::string(call) + " failed with " + vkResultName(result) + " (" + file + ":" + std::to_string(line) + ")";
     if (result == VK_ERROR_DEVICE_LOST) message = "the GPU device was lost: " + message;
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
         message = "out of memory: " + message + "; try fewer voxels (--voxels) or a smaller image";

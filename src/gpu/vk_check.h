@@ -15,8 +15,8 @@ const char* vkResultName(VkResult result);
 
 }  // namespace vct
 
-#define VK_CHECK(call)                                                                    \
-    do {                                                                                  \
-        VkResult vkCheckResult_ = (call);                                                 \
+#define VK_CHECK(call)                                                                                    \
+    do {                                                                                                  \
+        VkResult vkCheckResult_ = (call);                                                                 \
         if (vkCheckResult_ != VK_SUCCESS) ::vct::throwVkError(vkCheckResult_, #call, __FILE__, __LINE__); \
     } while (0)

@@ -55,8 +55,7 @@ Image readPfm(const std::string& path) {
     Image image;
     in >> magic >> image.width >> image.height >> scale;
     in.get();  // the single whitespace character after the scale
-    if (!in || magic != "PF" || image.width == 0 || image.height == 0 || image.width > 65536 ||
-        image.height > 65536)
+    if (!in || magic != "PF" || image.width == 0 || image.height == 0 || image.width > 65536 || image.height > 65536)
         throw Error("'" + path + "' is not an RGB PFM file");
     if (scale > 0.0) throw Error("'" + path + "' is a big-endian PFM, which is not supported");
     const size_t rowFloats = size_t(image.width) * 3;

@@ -16,8 +16,8 @@ namespace vct {
 
 // In pipeline order.
 enum class Pass : uint32_t { Shadow, Voxelize, Inject, Mips, Bounce, GBuffer, Shade, Resolve };
-inline constexpr std::array<Pass, 8> kPipelineOrder = {Pass::Shadow, Pass::Voxelize, Pass::Inject,  Pass::Mips,
-                                                       Pass::Bounce, Pass::GBuffer,  Pass::Shade,   Pass::Resolve};
+inline constexpr std::array<Pass, 8> kPipelineOrder = {Pass::Shadow, Pass::Voxelize, Pass::Inject, Pass::Mips,
+                                                       Pass::Bounce, Pass::GBuffer,  Pass::Shade,  Pass::Resolve};
 // "shadow", "voxelize", … as the timings and the profiler name them.
 const char* passName(Pass pass);
 

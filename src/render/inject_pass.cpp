@@ -20,8 +20,8 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuf
              radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0], 0u);
 }
 
-void InjectPass::recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights,
-                              VkBuffer shadowViews, const ShadowPass& shadows, VoxelVolumes& volumes) {
+void InjectPass::recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+                              const ShadowPass& shadows, VoxelVolumes& volumes) {
     const GpuImage &bounceTarget = volumes.bounceTarget, &radiance = volumes.radiance;
     dispatch(commands, frameConstants, lights, shadowViews, shadows, volumes, bounceTarget.view, 1u);
     // The bounce's level 0 replaces the first bounce's; every texel is written. Copies want the
@@ -31,8 +31,8 @@ void InjectPass::recordBounce(VkCommandBuffer commands, VkBuffer frameConstants,
                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                 0, 1);
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0,
+                 1);
     VkImageCopy region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

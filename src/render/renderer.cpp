@@ -9,8 +9,8 @@
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
-#include "render/frame_plan.h"
 #include "render/frame_constants.h"
+#include "render/frame_plan.h"
 #include "render/renderer_limits.h"
 #include "render/voxel_grid_fit.h"
 
@@ -75,7 +75,8 @@ void Renderer::setGeometry(const Scene& scene) {
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     brightestEmission_ = 0.0f;
     for (const Material& material : scene.materials)
-        brightestEmission_ = std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
+        brightestEmission_ =
+            std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
     sceneGpu_ = std::make_unique<SceneGpu>(context_, local);
     voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
     resize(settings_.image);  // the G-buffer pipeline depends on the scene's textures
@@ -100,7 +101,8 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     for (Light& light : local) light.position -= sceneOrigin_;
     const ShadowLayout previous = shadowLayout_;
     shadowLayout_ = layoutShadows(local, sceneBounds_, settings_);
-    lightsBuffer_ = hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    lightsBuffer_ =
+        hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     shadowViewsBuffer_ =
         hostArray<glsl::ShadowView>(context_, shadowLayout_.views.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     // A scene without lights has empty arrays, whose data() may be null: memcpy must not see it (UBSan).
@@ -181,9 +183,8 @@ FrameStats Renderer::renderFrame() {
             record();
             timer_.end(commands);
         };
-        run(Pass::Shadow, [&] {
-            shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_);
-        });
+        run(Pass::Shadow,
+            [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_); });
         run(Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
         run(Pass::Inject, [&] {
             injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
@@ -191,8 +192,8 @@ FrameStats Renderer::renderFrame() {
         });
         run(Pass::Mips, [&] { recordMips(commands); });
         run(Pass::Bounce, [&] {
-            injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
-                                     shadowViewsBuffer_.buffer, *shadowPass_, *volumes_);
+            injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
+                                     *shadowPass_, *volumes_);
             recordMips(commands);
         });
         run(Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
@@ -251,9 +252,9 @@ uint64_t Renderer::deviceMemoryBytes() const {
              &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps})
         bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
-    for (const Buffer* buffer : std::initializer_list<const Buffer*>{&sceneGpu_->vertices, &sceneGpu_->indices,
-                                                                     &sceneGpu_->triangleMaterials,
-                                                                     &sceneGpu_->materials, &voxelizePass_->workItems})
+    for (const Buffer* buffer :
+         std::initializer_list<const Buffer*>{&sceneGpu_->vertices, &sceneGpu_->indices, &sceneGpu_->triangleMaterials,
+                                              &sceneGpu_->materials, &voxelizePass_->workItems})
         bytes += buffer->size;
     for (const Buffer& accumulation : voxelizePass_->accumulation) bytes += accumulation.size;
     return bytes;

@@ -14,9 +14,9 @@ namespace vct {
 namespace {
 
 // Bytes per texel of the formats the passes create (see each pass's constructor).
-constexpr uint64_t kShadowTexel = 4;                 // D32
+constexpr uint64_t kShadowTexel = 4;                    // D32
 constexpr uint64_t kSampleBytes = 16 + 8 + 8 + 4 + 16;  // G-buffer position, normal, base colour, depth; shade
-constexpr uint64_t kResolvedPixel = 16;              // RGBA32F
+constexpr uint64_t kResolvedPixel = 16;                 // RGBA32F
 
 std::string bytesText(uint64_t bytes) {
     char text[32];
@@ -41,11 +41,10 @@ struct SideLimit {
 };
 SideLimit renderTargetSideLimit(const VkPhysicalDeviceLimits& limits, bool width) {
     SideLimit tightest{limits.maxImageDimension2D, "maxImageDimension2D"};
-    const SideLimit others[] = {
-        {width ? limits.maxFramebufferWidth : limits.maxFramebufferHeight,
-         width ? "maxFramebufferWidth" : "maxFramebufferHeight"},
-        {width ? limits.maxViewportDimensions[0] : limits.maxViewportDimensions[1],
-         width ? "maxViewportDimensions[0]" : "maxViewportDimensions[1]"}};
+    const SideLimit others[] = {{width ? limits.maxFramebufferWidth : limits.maxFramebufferHeight,
+                                 width ? "maxFramebufferWidth" : "maxFramebufferHeight"},
+                                {width ? limits.maxViewportDimensions[0] : limits.maxViewportDimensions[1],
+                                 width ? "maxViewportDimensions[0]" : "maxViewportDimensions[1]"}};
     for (const SideLimit& other : others)
         if (other.value < tightest.value) tightest = other;
     return tightest;
@@ -59,8 +58,8 @@ uint32_t largestPowerOfTwoAtMost(uint32_t value) {
 
 void checkVoxelResolution(const VkPhysicalDeviceLimits& limits, const std::string& deviceName, uint32_t resolution) {
     if (resolution < kMinVoxelResolution || resolution > kMaxVoxelResolution || (resolution & (resolution - 1)) != 0)
-        throw Error("the voxel resolution must be a power of two from " + std::to_string(kMinVoxelResolution) +
-                    " to " + std::to_string(kMaxVoxelResolution) + ", not " + std::to_string(resolution));
+        throw Error("the voxel resolution must be a power of two from " + std::to_string(kMinVoxelResolution) + " to " +
+                    std::to_string(kMaxVoxelResolution) + ", not " + std::to_string(resolution));
     if (resolution > limits.maxImageDimension3D) {
         const uint32_t fitting = largestPowerOfTwoAtMost(limits.maxImageDimension3D);
         throw Error("a " + std::to_string(resolution) + "³ voxel grid is larger than " + deviceName +
@@ -78,11 +77,11 @@ void checkImageSize(const VkPhysicalDeviceLimits& limits, const std::string& dev
         const SideLimit limit = renderTargetSideLimit(limits, width);
         if (samples <= limit.value) continue;
         const std::string ss = std::to_string(settings.image.supersample);
-        throw Error("a " + std::to_string(settings.image.width) + "×" + std::to_string(settings.image.height) + " image with " +
-                    ss + "×" + ss + " supersampling renders " + std::to_string(samples) + " samples " +
+        throw Error("a " + std::to_string(settings.image.width) + "×" + std::to_string(settings.image.height) +
+                    " image with " + ss + "×" + ss + " supersampling renders " + std::to_string(samples) + " samples " +
                     (width ? "across" : "down") + ", more than " + deviceName + "'s " + limit.name + " of " +
-                    std::to_string(limit.value) + "; at this supersampling --" + (width ? "width" : "height") +
-                    " " + std::to_string(limit.value / settings.image.supersample) + " fits");
+                    std::to_string(limit.value) + "; at this supersampling --" + (width ? "width" : "height") + " " +
+                    std::to_string(limit.value / settings.image.supersample) + " fits");
     }
 }
 
@@ -143,17 +142,20 @@ void checkSceneBuffers(const VkPhysicalDeviceLimits& limits, const std::string& 
 
 RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSettings& settings) {
     RendererMemoryEstimate estimate;
-    estimate.voxels = voxelVolumeBytes(settings.resources) +
-                      voxelizeAccumulationBytes(settings.resources.voxelResolution);
+    estimate.voxels =
+        voxelVolumeBytes(settings.resources) + voxelizeAccumulationBytes(settings.resources.voxelResolution);
 
     const ShadowLayout layout = layoutShadows(scene.lights, scene.bounds(), settings);
     const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;
     const uint64_t localSide = layout.localLayers ? settings.resources.localShadowMapSize : 1;
     estimate.shadowMaps = (std::max(layout.sunLayers, 1u) * sunSide * sunSide +
-                           std::max(layout.localLayers, 1u) * localSide * localSide) * kShadowTexel;
+                           std::max(layout.localLayers, 1u) * localSide * localSide) *
+                          kShadowTexel;
 
-    const uint64_t samples = uint64_t(settings.image.width) * settings.image.height * settings.image.supersample * settings.image.supersample;
-    estimate.imageTargets = samples * kSampleBytes + uint64_t(settings.image.width) * settings.image.height * kResolvedPixel;
+    const uint64_t samples = uint64_t(settings.image.width) * settings.image.height * settings.image.supersample *
+                             settings.image.supersample;
+    estimate.imageTargets =
+        samples * kSampleBytes + uint64_t(settings.image.width) * settings.image.height * kResolvedPixel;
 
     estimate.scene = scene.vertices.size() * sizeof(glsl::GpuVertex) + scene.indices.size() * sizeof(uint32_t) +
                      scene.triangleMaterials.size() * sizeof(uint32_t) +
@@ -181,7 +183,8 @@ void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalD
                           bytesText(estimate.scene) + "), more than the " + bytesText(heap) + " heap of " + deviceName;
     // Suggest the setting that frees the most: a coarser voxel grid first, then smaller shadow maps.
     RenderSettings smaller = settings;
-    while (smaller.resources.voxelResolution > kMinVoxelResolution && estimateRendererMemory(scene, smaller).total() > heap)
+    while (smaller.resources.voxelResolution > kMinVoxelResolution &&
+           estimateRendererMemory(scene, smaller).total() > heap)
         smaller.resources.voxelResolution /= 2;
     while (smaller.resources.sunShadowMapSize > 512 && estimateRendererMemory(scene, smaller).total() > heap) {
         smaller.resources.sunShadowMapSize /= 2;

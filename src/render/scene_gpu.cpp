@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <cstring>
 #include <numeric>
+#include <string>
 
-#include "gpu/commands.h"
 #include "error.h"
+#include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "gpu_types.h"
 
@@ -79,7 +79,8 @@ void checkSceneCanBeRendered(const Scene& scene) {
         if (!finite(glm::vec3(color)) || !std::isfinite(color.a) || !finite(material.emission) ||
             !std::isfinite(material.metallic) || !std::isfinite(material.roughness) ||
             !std::isfinite(material.specularWeight))
-            fail("material " + std::to_string(i) + " ('" + material.name + "') holds a value that is not a finite number");
+            fail("material " + std::to_string(i) + " ('" + material.name +
+                 "') holds a value that is not a finite number");
     }
 }
 
@@ -105,9 +106,8 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
     // A stable sort by material keeps each material's triangles in file order.
     std::vector<uint32_t> order(triangleCount);
     std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return scene.triangleMaterials[a] < scene.triangleMaterials[b];
-    });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return scene.triangleMaterials[a] < scene.triangleMaterials[b]; });
     std::vector<uint32_t> sortedIndices(indexCount);
     std::vector<uint32_t> sortedMaterials(triangleCount);
     for (uint32_t i = 0; i < triangleCount; ++i) {

@@ -62,8 +62,8 @@ Components effectiveComponents(const ShadingSettings& shading) {
 
 bool needsVoxels(const ShadingSettings& shading) {
     const Components shown = effectiveComponents(shading);
-    return shown.indirectDiffuse || shown.indirectSpecular || (shown.ambientOcclusion && shading.ambientFactor > 0.0f) ||
-           shading.debugView >= DebugView::AmbientOcclusion;
+    return shown.indirectDiffuse || shown.indirectSpecular ||
+           (shown.ambientOcclusion && shading.ambientFactor > 0.0f) || shading.debugView >= DebugView::AmbientOcclusion;
 }
 
 }  // namespace vct

@@ -5,8 +5,8 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/gbuffer_pass.h"
-#include "render/voxel_volumes.h"
 #include "render/shadow_pass.h"
+#include "render/voxel_volumes.h"
 
 namespace vct {
 

@@ -24,7 +24,8 @@ glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, fl
 
 }  // namespace
 
-ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& sceneBounds, const RenderSettings& settings) {
+ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& sceneBounds,
+                           const RenderSettings& settings) {
     ShadowLayout layout;
     const glm::vec3 center = sceneBounds.center();
     const float radius = std::max(0.5f * glm::length(sceneBounds.extent()), 1e-6f);
@@ -41,8 +42,8 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& scene
             glsl::ShadowView view{};
             view.viewProjection = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) *
                                   lookAlong(eye, light.direction, glm::vec3(0, 1, 0));
-            view.params = glm::vec4(0.0f, float(layout.sunLayers++), 2.0f * radius / float(settings.resources.sunShadowMapSize),
-                                    0.0f);
+            view.params = glm::vec4(0.0f, float(layout.sunLayers++),
+                                    2.0f * radius / float(settings.resources.sunShadowMapSize), 0.0f);
             layout.views.push_back(view);
             gpu.spotShadow.w = 1.0f;
         } else {
@@ -62,12 +63,13 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& scene
                 gpu.spotShadow.w = 1.0f;
             } else {
                 // Faces a little wider than 90° so the PCF kernel near a face edge stays inside the face.
-                const float margin = 1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(settings.resources.localShadowMapSize);
+                const float margin =
+                    1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(settings.resources.localShadowMapSize);
                 const float fov = 2.0f * std::atan(margin);
                 const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
                 for (const glm::vec3& axis : axes)
-                    layout.views.push_back(perspectiveView(light.position, axis, fov, znear, zfar,
-                                                           layout.localLayers++, settings.resources.localShadowMapSize));
+                    layout.views.push_back(perspectiveView(light.position, axis, fov, znear, zfar, layout.localLayers++,
+                                                           settings.resources.localShadowMapSize));
                 gpu.spotShadow.w = 6.0f;
             }
         }
@@ -114,7 +116,9 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
 
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
-    DescriptorPush().buffer(0, scene.vertices.buffer).buffer(1, viewsBuffer)
+    DescriptorPush()
+        .buffer(0, scene.vertices.buffer)
+        .buffer(1, viewsBuffer)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
     vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     vkCmdSetDepthBias(commands, 0.0f, 0.0f, settings.shading.shadowSlopeBias);

@@ -9,8 +9,8 @@ namespace vct {
 
 glsl::VoxelGridParams fitVoxelGrid(const Bounds& sceneBounds, uint32_t resolution) {
     if (resolution < kMinVoxelResolution || resolution > kMaxVoxelResolution || !std::has_single_bit(resolution))
-        throw Error("the voxel resolution must be a power of two from " + std::to_string(kMinVoxelResolution) +
-                    " to " + std::to_string(kMaxVoxelResolution) + ", not " + std::to_string(resolution));
+        throw Error("the voxel resolution must be a power of two from " + std::to_string(kMinVoxelResolution) + " to " +
+                    std::to_string(kMaxVoxelResolution) + ", not " + std::to_string(resolution));
     const glm::vec3 extent = sceneBounds.extent();
     float side = std::max({extent.x, extent.y, extent.z});
     if (!(side > 0.0f)) side = 1.0f;

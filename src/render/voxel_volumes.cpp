@@ -9,8 +9,8 @@ namespace vct {
 
 std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources) {
     const uint32_t side = resources.voxelResolution, mips = voxelMipCount(side);
-    const VkImageUsageFlags scene = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    const VkImageUsageFlags scene =
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     const VkImageUsageFlags light = scene | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     const VkFormat half = VK_FORMAT_R16G16B16A16_SFLOAT;
     std::vector<VoxelVolumeDesc> descs = {
@@ -66,13 +66,15 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
         for (const GpuImage* image : images())
             imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                          VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+                         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                         VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
     });
 }
 
 std::vector<VkImageView> VoxelVolumes::directionalViews() const {
     std::vector<VkImageView> views(6, radiance.view);
-    for (size_t direction = 0; direction < directional.size(); ++direction) views[direction] = directional[direction].view;
+    for (size_t direction = 0; direction < directional.size(); ++direction)
+        views[direction] = directional[direction].view;
     return views;
 }
 

@@ -45,7 +45,7 @@ struct VoxelizePass {
     // normal, emission), visible to later compute and fragment shader reads (sampled or storage).
     void record(VkCommandBuffer commands, const SceneGpu& sceneGpu, VoxelVolumes& volumes);
 
-    glsl::VoxelizeParams params{};  // grid.resolution.z = triangles, .w = work items
+    glsl::VoxelizeParams params{};                          // grid.resolution.z = triangles, .w = work items
     std::array<Buffer, glsl::ACCUM_CHANNELS> accumulation;  // uint per voxel each, cleared every record
     Buffer workItems;                                       // uvec2 (triangle, packed tile)
     uint32_t workGroupRows = 0;  // the voxelize dispatch is params.dispatch.x × workGroupRows

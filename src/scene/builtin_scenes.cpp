@@ -61,14 +61,20 @@ struct SceneBuilder {
     // An axis-aligned box (metres) whose faces point outwards.
     void addBox(glm::vec3 lo, glm::vec3 hi, uint32_t material) {
         const glm::vec3 c = 0.5f * (lo + hi);
-        const glm::vec3 far = 2.0f * hi - lo;  // a point beyond each +face
+        const glm::vec3 far = 2.0f * hi - lo;   // a point beyond each +face
         const glm::vec3 near = 2.0f * lo - hi;  // ... and each −face
-        addQuad({{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}}}, {c.x, near.y, c.z}, material);
-        addQuad({{{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}}, {c.x, far.y, c.z}, material);
-        addQuad({{{lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {lo.x, lo.y, hi.z}}}, {near.x, c.y, c.z}, material);
-        addQuad({{{hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z}}}, {far.x, c.y, c.z}, material);
-        addQuad({{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}}}, {c.x, c.y, near.z}, material);
-        addQuad({{{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}}, {c.x, c.y, far.z}, material);
+        addQuad({{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}}}, {c.x, near.y, c.z},
+                material);
+        addQuad({{{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}}, {c.x, far.y, c.z},
+                material);
+        addQuad({{{lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {lo.x, lo.y, hi.z}}}, {near.x, c.y, c.z},
+                material);
+        addQuad({{{hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z}}}, {far.x, c.y, c.z},
+                material);
+        addQuad({{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}}}, {c.x, c.y, near.z},
+                material);
+        addQuad({{{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}}, {c.x, c.y, far.z},
+                material);
     }
 
     // A triangle (metres) with per-vertex normals, wound counter-clockwise around them.
@@ -92,7 +98,7 @@ struct SceneBuilder {
             for (uint32_t segment = 0; segment < segments; ++segment) {
                 const Vertex a = point(ring, segment), b = point(ring, segment + 1);
                 const Vertex c = point(ring + 1, segment), d = point(ring + 1, segment + 1);
-                if (ring > 0) addTriangle({a, b, c}, material);              // the poles need one triangle
+                if (ring > 0) addTriangle({a, b, c}, material);  // the poles need one triangle
                 if (ring + 1 < rings) addTriangle({b, d, c}, material);
             }
         }
@@ -139,11 +145,11 @@ Scene makeCornellBox(CornellLight lightKind) {
     builder.addQuad({{{556, 548.8f, 0}, {556, 548.8f, 559.2f}, {0, 548.8f, 559.2f}, {0, 548.8f, 0}}}, inside,
                     white);  // ceiling
     builder.addQuad({{{549.6f, 0, 559.2f}, {0, 0, 559.2f}, {0, 548.8f, 559.2f}, {556, 548.8f, 559.2f}}}, inside,
-                    white);  // back wall
+                    white);                                                                              // back wall
     builder.addQuad({{{0, 0, 559.2f}, {0, 0, 0}, {0, 548.8f, 0}, {0, 548.8f, 559.2f}}}, inside, green);  // right
     builder.addQuad({{{552.8f, 0, 0}, {549.6f, 0, 559.2f}, {556, 548.8f, 559.2f}, {556, 548.8f, 0}}}, inside,
-                    red);  // left wall
-    builder.addBlock({{{130, 165, 65}, {82, 165, 225}, {240, 165, 272}, {290, 165, 114}}}, white);   // short
+                    red);                                                                           // left wall
+    builder.addBlock({{{130, 165, 65}, {82, 165, 225}, {240, 165, 272}, {290, 165, 114}}}, white);  // short
     if (lightKind != CornellLight::PointWithMetalSphere) {
         builder.addBlock({{{423, 330, 247}, {265, 330, 296}, {314, 330, 456}, {472, 330, 406}}}, white);  // tall
     } else {
@@ -266,7 +272,8 @@ Scene makeTerrain() {
     sun.intensity = 5.0f;
     sun.direction = glm::normalize(glm::vec3(-0.6f, -0.45f, 0.35f));
     builder.scene.lights.push_back(sun);
-    builder.scene.cameras.push_back(cameraLookingAt("terrain camera", {-11.0f, 6.0f, -11.0f}, {0.0f, -0.5f, 0.0f}, 45.0f));
+    builder.scene.cameras.push_back(
+        cameraLookingAt("terrain camera", {-11.0f, 6.0f, -11.0f}, {0.0f, -0.5f, 0.0f}, 45.0f));
     return builder.scene;
 }
 

@@ -63,8 +63,7 @@ static bool isInside(const fs::path& path, const fs::path& root) {
 
 ResolvedUri resolveUri(const FilePolicy& policy, const fs::path& baseFolder, const std::string& uri) {
     if (uri.empty()) return {{}, "is empty"};
-    if (hasScheme(uri))
-        return {{}, "is not a relative path or a data: URI (only files beside the scene are read)"};
+    if (hasScheme(uri)) return {{}, "is not a relative path or a data: URI (only files beside the scene are read)"};
     const std::string decoded = percentDecode(uri);
     if (decoded.find('\0') != std::string::npos) return {{}, "contains a NUL character"};
     if (decoded[0] == '/' || decoded[0] == '\\')
@@ -72,8 +71,7 @@ ResolvedUri resolveUri(const FilePolicy& policy, const fs::path& baseFolder, con
 
     // First the lexical check, so `../../x.bin` is refused as an escape even when it does not exist.
     const fs::path joined = (baseFolder / decoded).lexically_normal();
-    if (!isInside(joined, policy.root))
-        return {{}, "leaves the allowed folder '" + policy.root.string() + "'"};
+    if (!isInside(joined, policy.root)) return {{}, "leaves the allowed folder '" + policy.root.string() + "'"};
 
     // Then the real one: symlinks are followed and the result must still be inside the root.
     std::error_code error;
@@ -90,8 +88,8 @@ static std::string checkStat(const struct stat& status, uint64_t maxFileBytes) {
     if (S_ISDIR(status.st_mode)) return "is a directory";
     if (!S_ISREG(status.st_mode)) return "is not a regular file (a device, FIFO or socket)";
     if (uint64_t(status.st_size) > maxFileBytes)
-        return "is " + std::to_string(status.st_size) + " bytes, over the limit of " +
-               std::to_string(maxFileBytes) + " bytes";
+        return "is " + std::to_string(status.st_size) + " bytes, over the limit of " + std::to_string(maxFileBytes) +
+               " bytes";
     return {};
 }
 
@@ -101,8 +99,7 @@ std::string checkRegularFile(const fs::path& path, uint64_t maxFileBytes) {
     return checkStat(status, maxFileBytes);
 }
 
-bool readRegularFile(const fs::path& path, uint64_t maxFileBytes, std::vector<uint8_t>& bytes,
-                     std::string& problem) {
+bool readRegularFile(const fs::path& path, uint64_t maxFileBytes, std::vector<uint8_t>& bytes, std::string& problem) {
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused by fstat below.
     const int file = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (file < 0) {

@@ -31,8 +31,7 @@ struct ResolvedUri {
 };
 
 // Resolves a (percent-encoded) relative URI against `baseFolder` and applies the policy.
-ResolvedUri resolveUri(const FilePolicy& policy, const std::filesystem::path& baseFolder,
-                       const std::string& uri);
+ResolvedUri resolveUri(const FilePolicy& policy, const std::filesystem::path& baseFolder, const std::string& uri);
 
 // Checks that `path` names a regular file no larger than `maxFileBytes`; empty when it does.
 std::string checkRegularFile(const std::filesystem::path& path, uint64_t maxFileBytes);

@@ -68,11 +68,10 @@ std::string accessorTypeName(int type) {
 
 // The bytes of `count` elements of `elementBytes` each, `stride` apart, starting `byteOffset`
 // into a buffer view; throws rather than return a range the buffer does not hold.
-static const uint8_t* viewBytes(const tinygltf::Model& model, int bufferViewIndex, size_t byteOffset,
-                                size_t stride, size_t count, size_t elementBytes) {
+static const uint8_t* viewBytes(const tinygltf::Model& model, int bufferViewIndex, size_t byteOffset, size_t stride,
+                                size_t count, size_t elementBytes) {
     if (bufferViewIndex < 0 || size_t(bufferViewIndex) >= model.bufferViews.size())
-        throw Error("accessor reads bufferView " + std::to_string(bufferViewIndex) +
-                    ", which does not exist");
+        throw Error("accessor reads bufferView " + std::to_string(bufferViewIndex) + ", which does not exist");
     const tinygltf::BufferView& view = model.bufferViews[size_t(bufferViewIndex)];
     if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
         throw Error("bufferView reads buffer " + std::to_string(view.buffer) + ", which does not exist");
@@ -128,8 +127,7 @@ static std::vector<double> readAccessor(const tinygltf::Model& model, int access
     const size_t elementBytes = components * componentBytes;
     if (components == 0 || componentBytes == 0 || accessor.type == TINYGLTF_TYPE_MAT2 ||
         accessor.type == TINYGLTF_TYPE_MAT3 || accessor.type == TINYGLTF_TYPE_MAT4)
-        throw Error("accessor " + std::to_string(accessorIndex) +
-                    " has a type that cannot be read as vertex data");
+        throw Error("accessor " + std::to_string(accessorIndex) + " has a type that cannot be read as vertex data");
 
     std::vector<double> values(accessor.count * components, 0.0);
     if (accessor.bufferView >= 0) {
@@ -139,9 +137,8 @@ static std::vector<double> readAccessor(const tinygltf::Model& model, int access
             viewBytes(model, accessor.bufferView, accessor.byteOffset, stride, accessor.count, elementBytes);
         for (size_t element = 0; element < accessor.count; ++element)
             for (size_t c = 0; c < components; ++c)
-                values[element * components + c] =
-                    readComponent(source + element * stride + c * componentBytes, accessor.componentType,
-                                  accessor.normalized);
+                values[element * components + c] = readComponent(source + element * stride + c * componentBytes,
+                                                                 accessor.componentType, accessor.normalized);
     }
     if (accessor.sparse.isSparse) {
         const size_t sparseCount = size_t(std::max(accessor.sparse.count, 0));
@@ -149,20 +146,19 @@ static std::vector<double> readAccessor(const tinygltf::Model& model, int access
         const size_t indexBytes = componentByteSize(indexType);
         if (indexBytes == 0 || indexType == TINYGLTF_COMPONENT_TYPE_FLOAT)
             throw Error("sparse indices have component type " + componentTypeName(indexType));
-        const uint8_t* indices = viewBytes(model, accessor.sparse.indices.bufferView,
-                                           size_t(std::max(accessor.sparse.indices.byteOffset, 0)),
-                                           indexBytes, sparseCount, indexBytes);
-        const uint8_t* substitutes = viewBytes(model, accessor.sparse.values.bufferView,
-                                               size_t(std::max(accessor.sparse.values.byteOffset, 0)),
-                                               elementBytes, sparseCount, elementBytes);
+        const uint8_t* indices =
+            viewBytes(model, accessor.sparse.indices.bufferView,
+                      size_t(std::max(accessor.sparse.indices.byteOffset, 0)), indexBytes, sparseCount, indexBytes);
+        const uint8_t* substitutes =
+            viewBytes(model, accessor.sparse.values.bufferView, size_t(std::max(accessor.sparse.values.byteOffset, 0)),
+                      elementBytes, sparseCount, elementBytes);
         for (size_t s = 0; s < sparseCount; ++s) {
             const size_t element = size_t(readComponent(indices + s * indexBytes, indexType, false));
             if (element >= accessor.count)
                 throw Error("sparse index " + std::to_string(element) + " is past the count");
             for (size_t c = 0; c < components; ++c)
-                values[element * components + c] =
-                    readComponent(substitutes + s * elementBytes + c * componentBytes, accessor.componentType,
-                                  accessor.normalized);
+                values[element * components + c] = readComponent(substitutes + s * elementBytes + c * componentBytes,
+                                                                 accessor.componentType, accessor.normalized);
         }
     }
     return values;

@@ -81,8 +81,7 @@ bool fileExists(const std::string& path, void* user) {
 
 std::string expandFilePath(const std::string& path, void*) { return path; }  // no `~` or `$VAR` expansion
 
-bool readWholeFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path,
-                   void* user) {
+bool readWholeFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path, void* user) {
     const ParseContext& context = *static_cast<ParseContext*>(user);
     const auto vetted = context.vettedFiles.find(path);
     std::string problem = "was not vetted by the file policy";
@@ -113,9 +112,9 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         const size_t bufferBytes = context.model->buffers[size_t(view.buffer)].data.size();
         if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset ||
             view.byteLength > size_t(INT32_MAX)) {
-            context.fatal = context.file + ": " + at("images", size_t(imageIndex)) +
-                            ".bufferView: bufferView " + std::to_string(image->bufferView) +
-                            " runs past the end of buffer " + std::to_string(view.buffer);
+            context.fatal = context.file + ": " + at("images", size_t(imageIndex)) + ".bufferView: bufferView " +
+                            std::to_string(image->bufferView) + " runs past the end of buffer " +
+                            std::to_string(view.buffer);
             return false;
         }
     }
@@ -127,9 +126,8 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         return true;
     }
     if (width > kMaxImageSide || height > kMaxImageSide) {
-        context.imageProblems[imageIndex] = name + " is " + std::to_string(width) + "×" +
-                                            std::to_string(height) + ", larger than " +
-                                            std::to_string(kMaxImageSide) + " on a side";
+        context.imageProblems[imageIndex] = name + " is " + std::to_string(width) + "×" + std::to_string(height) +
+                                            ", larger than " + std::to_string(kMaxImageSide) + " on a side";
         return true;
     }
     stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
@@ -192,9 +190,8 @@ void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext&
             const nlohmann::json* byteLength = member(&entry, "byteLength");
             if (required && !error && byteLength && byteLength->is_number_unsigned() &&
                 byteLength->get<uint64_t>() > fileBytes)
-                throw Error(context.file + ": " + at(list, i) + ": '" + uri + "' holds " +
-                            std::to_string(fileBytes) + " bytes, fewer than its byteLength " +
-                            std::to_string(byteLength->get<uint64_t>()));
+                throw Error(context.file + ": " + at(list, i) + ": '" + uri + "' holds " + std::to_string(fileBytes) +
+                            " bytes, fewer than its byteLength " + std::to_string(byteLength->get<uint64_t>()));
             context.vettedFiles[joinPath(sceneFolder.string(), tinygltfUrlDecode(uri))] = resolved.path;
         }
     };
@@ -204,8 +201,7 @@ void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext&
     // Only base colour images are decoded; the others are not used by the renderer.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
-    if (materials == document.end() || !materials->is_array() || textures == document.end() ||
-        !textures->is_array())
+    if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
         return;
     for (const nlohmann::json& material : *materials) {
         const nlohmann::json* index =
@@ -242,8 +238,7 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     context.file = path;
     context.policy.maxFileBytes = options.maxFileBytes;
     std::error_code error;
-    context.policy.root =
-        options.allowedRoot.empty() ? sceneFolder : fs::canonical(options.allowedRoot, error);
+    context.policy.root = options.allowedRoot.empty() ? sceneFolder : fs::canonical(options.allowedRoot, error);
     if (error) throw Error(path + ": the allowed folder '" + options.allowedRoot + "' " + error.message());
 
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -256,18 +251,18 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     gltf.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &context});
     gltf.SetImageLoader(&loadImage, &context);
     std::string errors, warnings;
-    const bool parsed = binary ? gltf.LoadBinaryFromMemory(&model, &errors, &warnings, bytes.data(),
-                                                           unsigned(bytes.size()), sceneFolder.string())
-                               : gltf.LoadASCIIFromString(&model, &errors, &warnings,
-                                                          reinterpret_cast<const char*>(bytes.data()),
-                                                          unsigned(bytes.size()), sceneFolder.string());
+    const bool parsed =
+        binary ? gltf.LoadBinaryFromMemory(&model, &errors, &warnings, bytes.data(), unsigned(bytes.size()),
+                                           sceneFolder.string())
+               : gltf.LoadASCIIFromString(&model, &errors, &warnings, reinterpret_cast<const char*>(bytes.data()),
+                                          unsigned(bytes.size()), sceneFolder.string());
     if (!context.fatal.empty()) throw Error(context.fatal);
     if (!parsed) {
         while (!errors.empty() && errors.back() == '\n') errors.pop_back();
         for (size_t newline = errors.find('\n'); newline != std::string::npos; newline = errors.find('\n'))
             errors.replace(newline, 1, "; ");  // one line per message
-        throw Error(path + ": not a valid glTF file: " +
-                    (errors.empty() ? std::string("tinygltf gave no reason") : errors));
+        throw Error(path +
+                    ": not a valid glTF file: " + (errors.empty() ? std::string("tinygltf gave no reason") : errors));
     }
     result.imageProblems = std::move(context.imageProblems);
     return result;
@@ -326,11 +321,10 @@ struct Converter {
         return sceneTexture;
     }
 
-    static double extensionNumber(const tinygltf::ExtensionMap& extensions, const char* extension,
-                                  const char* key, double fallback) {
+    static double extensionNumber(const tinygltf::ExtensionMap& extensions, const char* extension, const char* key,
+                                  double fallback) {
         const auto found = extensions.find(extension);
-        if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key))
-            return fallback;
+        if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key)) return fallback;
         return found->second.Get(key).GetNumberAsDouble();
     }
 
@@ -351,8 +345,8 @@ struct Converter {
             material.roughness = float(pbr.roughnessFactor);
             material.specularWeight =
                 float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
-            const double strength = extensionNumber(source.extensions, "KHR_materials_emissive_strength",
-                                                    "emissiveStrength", 1.0);
+            const double strength =
+                extensionNumber(source.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
             if (source.emissiveFactor.size() == 3)
                 material.emission = glm::vec3(glm::make_vec3(source.emissiveFactor.data()) * strength);
             material.doubleSided = source.doubleSided;
@@ -403,8 +397,7 @@ struct Converter {
         return corners;
     }
 
-    void addPrimitive(const std::string& path, const tinygltf::Primitive& primitive,
-                      const glm::dmat4& world) {
+    void addPrimitive(const std::string& path, const tinygltf::Primitive& primitive, const glm::dmat4& world) {
         const int mode = primitive.mode;
         if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -431,8 +424,7 @@ struct Converter {
             for (size_t i = 0; i < vertexCount; ++i) indices[i] = uint32_t(i);
         }
         if ((mode == -1 || mode == TINYGLTF_MODE_TRIANGLES) && indices.size() % 3 != 0)
-            warn(path, std::to_string(indices.size()) +
-                           " indices are not a whole number of triangles; the last " +
+            warn(path, std::to_string(indices.size()) + " indices are not a whole number of triangles; the last " +
                            std::to_string(indices.size() % 3) + " are ignored");
         const std::vector<uint32_t> corners = triangleCorners(mode, indices);
 
@@ -464,15 +456,13 @@ struct Converter {
         const uint32_t material = uint32_t(materialOf(primitive));
         const bool mirrored = determinant < 0.0;  // a mirroring transform turns front faces into back faces
         if (scene.vertices.size() + std::max(vertexCount, corners.size()) > UINT32_MAX)
-            throw Error(scene.name + ": " + path +
-                        ": the scene has more vertices than 32-bit indices can address");
+            throw Error(scene.name + ": " + path + ": the scene has more vertices than 32-bit indices can address");
         const uint32_t base = uint32_t(scene.vertices.size());
         if (!normals.empty()) scene.vertices.insert(scene.vertices.end(), vertices.begin(), vertices.end());
         for (size_t t = 0; t + 2 < corners.size(); t += 3) {
             uint32_t a = corners[t], b = corners[t + 1], c = corners[t + 2];
             if (mirrored) std::swap(b, c);
-            const glm::vec3 faceNormal =
-                faceNormalOf(vertices[a].position, vertices[b].position, vertices[c].position);
+            const glm::vec3 faceNormal = faceNormalOf(vertices[a].position, vertices[b].position, vertices[c].position);
             if (normals.empty()) {
                 // Flat shading: three vertices of its own per triangle, all with the face normal.
                 const uint32_t first = uint32_t(scene.vertices.size());
@@ -485,8 +475,7 @@ struct Converter {
             } else {
                 for (uint32_t corner : {a, b, c}) {
                     Vertex& vertex = scene.vertices[base + corner];
-                    if (vertex.normal == glm::vec3(0.0f))
-                        vertex.normal = faceNormal;  // a zero normal in the file
+                    if (vertex.normal == glm::vec3(0.0f)) vertex.normal = faceNormal;  // a zero normal in the file
                 }
                 scene.indices.insert(scene.indices.end(), {base + a, base + b, base + c});
             }
@@ -512,8 +501,7 @@ struct Converter {
     void addCamera(const std::string& path, const tinygltf::Node& node, const glm::dmat4& world) {
         const tinygltf::Camera& source = model.cameras[size_t(node.camera)];
         if (source.type != "perspective") {
-            warn(at("cameras", size_t(node.camera)),
-                 "orthographic cameras are not supported; the camera is skipped");
+            warn(at("cameras", size_t(node.camera)), "orthographic cameras are not supported; the camera is skipped");
             return;
         }
         glm::dvec3 forward;
@@ -578,8 +566,7 @@ struct Converter {
     void convertNodes() {
         std::vector<std::pair<int, glm::dmat4>> pending;
         const std::vector<int> roots = rootNodes();
-        for (auto root = roots.rbegin(); root != roots.rend(); ++root)
-            pending.emplace_back(*root, glm::dmat4(1.0));
+        for (auto root = roots.rbegin(); root != roots.rend(); ++root) pending.emplace_back(*root, glm::dmat4(1.0));
         while (!pending.empty()) {
             const auto [index, parentWorld] = pending.back();
             pending.pop_back();
@@ -589,13 +576,11 @@ struct Converter {
             if (node.mesh >= 0) {
                 const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
                 for (size_t p = 0; p < mesh.primitives.size(); ++p)
-                    addPrimitive(at(at("meshes", size_t(node.mesh)) + ".primitives", p), mesh.primitives[p],
-                                 world);
+                    addPrimitive(at(at("meshes", size_t(node.mesh)) + ".primitives", p), mesh.primitives[p], world);
             }
             if (node.camera >= 0) addCamera(path, node, world);
             const auto light = node.extensions.find("KHR_lights_punctual");
-            if (light != node.extensions.end())
-                addLight(path, light->second.Get("light").GetNumberAsInt(), world);
+            if (light != node.extensions.end()) addLight(path, light->second.Get("light").GetNumberAsInt(), world);
             for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
                 pending.emplace_back(*child, world);
         }

@@ -52,28 +52,24 @@ struct Validator {
     }
 
     // A reference to object `index` of a list with `size` entries; -1 means "absent" when optional.
-    void checkReference(const std::string& path, int index, size_t size, const char* what,
-                        bool optional) const {
+    void checkReference(const std::string& path, int index, size_t size, const char* what, bool optional) const {
         if (optional && index == -1) return;
         if (index < 0 || size_t(index) >= size)
             fail(path, std::string(what) + " " + std::to_string(index) + " does not exist (the file has " +
                            std::to_string(size) + ")");
     }
 
-    void checkFiniteArray(const std::string& path, const std::vector<double>& values,
-                          size_t expectedSize) const {
+    void checkFiniteArray(const std::string& path, const std::vector<double>& values, size_t expectedSize) const {
         if (values.empty()) return;  // absent: the glTF default applies
         if (values.size() != expectedSize)
-            fail(path, "has " + std::to_string(values.size()) + " numbers, expected " +
-                           std::to_string(expectedSize));
+            fail(path, "has " + std::to_string(values.size()) + " numbers, expected " + std::to_string(expectedSize));
         if (!allFinite(values)) fail(path, "holds a value that is not a finite number");
     }
 
     void checkNumber(const std::string& path, double value, double min, double max) const {
         if (!std::isfinite(value)) fail(path, "is not a finite number");
         if (value < min || value > max)
-            fail(path,
-                 formatNumber(value) + " is outside [" + formatNumber(min) + ", " + formatNumber(max) + "]");
+            fail(path, formatNumber(value) + " is outside [" + formatNumber(min) + ", " + formatNumber(max) + "]");
     }
 
     void checkNonNegative(const std::string& path, double value) const {
@@ -88,8 +84,7 @@ struct Validator {
         for (size_t i = 0; i < model.extensionsRequired.size(); ++i) {
             const std::string& name = model.extensionsRequired[i];
             if (std::find(supported.begin(), supported.end(), name) == supported.end())
-                fail(at("extensionsRequired", i),
-                     "the file requires extension " + name + ", which is not supported");
+                fail(at("extensionsRequired", i), "the file requires extension " + name + ", which is not supported");
         }
     }
 
@@ -103,12 +98,10 @@ struct Validator {
             if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset)
                 fail(path, "bytes " + std::to_string(view.byteOffset) + " to " +
                                std::to_string(uint64_t(view.byteOffset) + view.byteLength) +
-                               " run past the end of buffer " + std::to_string(view.buffer) +
-                               ", which holds " + std::to_string(bufferBytes) + " bytes");
-            if (view.byteStride != 0 &&
-                (view.byteStride < 4 || view.byteStride > 252 || view.byteStride % 4 != 0))
-                fail(path + ".byteStride",
-                     std::to_string(view.byteStride) + " is not a multiple of 4 in [4, 252]");
+                               " run past the end of buffer " + std::to_string(view.buffer) + ", which holds " +
+                               std::to_string(bufferBytes) + " bytes");
+            if (view.byteStride != 0 && (view.byteStride < 4 || view.byteStride > 252 || view.byteStride % 4 != 0))
+                fail(path + ".byteStride", std::to_string(view.byteStride) + " is not a multiple of 4 in [4, 252]");
         }
     }
 
@@ -130,30 +123,26 @@ struct Validator {
             const tinygltf::Accessor& accessor = model.accessors[i];
             const std::string path = at("accessors", i);
             if (componentByteSize(accessor.componentType) == 0)
-                fail(path + ".componentType",
-                     std::to_string(accessor.componentType) + " is not a glTF component type");
-            if (accessorComponentCount(accessor.type) == 0)
-                fail(path + ".type", "is not a glTF accessor type");
+                fail(path + ".componentType", std::to_string(accessor.componentType) + " is not a glTF component type");
+            if (accessorComponentCount(accessor.type) == 0) fail(path + ".type", "is not a glTF accessor type");
             if (accessor.normalized && (accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
                                         accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-                fail(path + ".normalized",
-                     "must not be true for " + componentTypeName(accessor.componentType));
+                fail(path + ".normalized", "must not be true for " + componentTypeName(accessor.componentType));
             if (accessor.count == 0) fail(path + ".count", "must be at least 1");
             if (accessor.count > kMaxAccessorCount)
                 fail(path + ".count", std::to_string(accessor.count) + " is more than this loader accepts (" +
                                           std::to_string(kMaxAccessorCount) + ")");
             const size_t elementBytes = accessorElementBytes(accessor.type, accessor.componentType);
             if (accessor.bufferView != -1) {
-                checkReference(path + ".bufferView", accessor.bufferView, model.bufferViews.size(),
-                               "bufferView", false);
+                checkReference(path + ".bufferView", accessor.bufferView, model.bufferViews.size(), "bufferView",
+                               false);
                 const size_t viewStride = model.bufferViews[size_t(accessor.bufferView)].byteStride;
                 if (viewStride != 0 && viewStride < elementBytes)
-                    fail(path, "elements of " + std::to_string(elementBytes) +
-                                   " bytes do not fit the byteStride " + std::to_string(viewStride) +
-                                   " of bufferView " + std::to_string(accessor.bufferView));
-                checkRange(path, accessor.bufferView, accessor.byteOffset,
-                           viewStride ? viewStride : elementBytes, accessor.count,
-                           lastElementBytes(accessor.type, accessor.componentType));
+                    fail(path, "elements of " + std::to_string(elementBytes) + " bytes do not fit the byteStride " +
+                                   std::to_string(viewStride) + " of bufferView " +
+                                   std::to_string(accessor.bufferView));
+                checkRange(path, accessor.bufferView, accessor.byteOffset, viewStride ? viewStride : elementBytes,
+                           accessor.count, lastElementBytes(accessor.type, accessor.componentType));
             }
             if (accessor.sparse.isSparse) checkSparse(path + ".sparse", accessor, elementBytes);
         }
@@ -166,22 +155,20 @@ struct Validator {
                  std::to_string(sparse.count) + " is outside [1, " + std::to_string(accessor.count) + "]");
         const size_t count = size_t(sparse.count);
         const int indexType = sparse.indices.componentType;
-        if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(path + ".indices.componentType",
-                 componentTypeName(indexType) + " is not an unsigned integer type");
-        checkReference(path + ".indices.bufferView", sparse.indices.bufferView, model.bufferViews.size(),
-                       "bufferView", false);
-        checkReference(path + ".values.bufferView", sparse.values.bufferView, model.bufferViews.size(),
-                       "bufferView", false);
+            fail(path + ".indices.componentType", componentTypeName(indexType) + " is not an unsigned integer type");
+        checkReference(path + ".indices.bufferView", sparse.indices.bufferView, model.bufferViews.size(), "bufferView",
+                       false);
+        checkReference(path + ".values.bufferView", sparse.values.bufferView, model.bufferViews.size(), "bufferView",
+                       false);
         if (sparse.indices.byteOffset < 0) fail(path + ".indices.byteOffset", "is negative");
         if (sparse.values.byteOffset < 0) fail(path + ".values.byteOffset", "is negative");
         const size_t indexBytes = componentByteSize(indexType);
-        checkRange(path + ".indices", sparse.indices.bufferView, size_t(sparse.indices.byteOffset),
-                   indexBytes, count, indexBytes);
-        checkRange(path + ".values", sparse.values.bufferView, size_t(sparse.values.byteOffset), elementBytes,
-                   count, elementBytes);
+        checkRange(path + ".indices", sparse.indices.bufferView, size_t(sparse.indices.byteOffset), indexBytes, count,
+                   indexBytes);
+        checkRange(path + ".values", sparse.values.bufferView, size_t(sparse.values.byteOffset), elementBytes, count,
+                   elementBytes);
     }
 
     // Which component types an attribute may use (glTF 2.0 §3.7.2.1, KHR_mesh_quantization).
@@ -192,28 +179,23 @@ struct Validator {
         const bool isFloat = component == TINYGLTF_COMPONENT_TYPE_FLOAT;
         const bool unsignedNormalized = normalized && (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                                        component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-        const bool signedNormalized = normalized && (component == TINYGLTF_COMPONENT_TYPE_BYTE ||
-                                                     component == TINYGLTF_COMPONENT_TYPE_SHORT);
+        const bool signedNormalized =
+            normalized && (component == TINYGLTF_COMPONENT_TYPE_BYTE || component == TINYGLTF_COMPONENT_TYPE_SHORT);
         const bool smallInteger =
             component != TINYGLTF_COMPONENT_TYPE_FLOAT && component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
         if (name == "POSITION") return type == TINYGLTF_TYPE_VEC3 && (isFloat || (quantized && smallInteger));
-        if (name == "NORMAL")
-            return type == TINYGLTF_TYPE_VEC3 && (isFloat || (quantized && signedNormalized));
-        if (name == "TANGENT")
-            return type == TINYGLTF_TYPE_VEC4 && (isFloat || (quantized && signedNormalized));
+        if (name == "NORMAL") return type == TINYGLTF_TYPE_VEC3 && (isFloat || (quantized && signedNormalized));
+        if (name == "TANGENT") return type == TINYGLTF_TYPE_VEC4 && (isFloat || (quantized && signedNormalized));
         if (name.rfind("TEXCOORD_", 0) == 0)
-            return type == TINYGLTF_TYPE_VEC2 &&
-                   (isFloat || unsignedNormalized || (quantized && smallInteger));
+            return type == TINYGLTF_TYPE_VEC2 && (isFloat || unsignedNormalized || (quantized && smallInteger));
         if (name.rfind("COLOR_", 0) == 0)
-            return (type == TINYGLTF_TYPE_VEC3 || type == TINYGLTF_TYPE_VEC4) &&
-                   (isFloat || unsignedNormalized);
+            return (type == TINYGLTF_TYPE_VEC3 || type == TINYGLTF_TYPE_VEC4) && (isFloat || unsignedNormalized);
         if (name.rfind("JOINTS_", 0) == 0)
             return type == TINYGLTF_TYPE_VEC4 && !normalized &&
                    (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                     component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
         if (name.rfind("WEIGHTS_", 0) == 0)
-            return type == TINYGLTF_TYPE_VEC4 &&
-                   (isFloat || unsignedNormalized || (quantized && signedNormalized));
+            return type == TINYGLTF_TYPE_VEC4 && (isFloat || unsignedNormalized || (quantized && signedNormalized));
         return true;  // application-specific attributes ("_NAME") are not read
     }
 
@@ -241,8 +223,8 @@ struct Validator {
         const int components = accessorComponentCount(model.accessors[size_t(accessorIndex)].type);
         for (size_t i = 0; i < values.size(); ++i)
             if (!std::isfinite(values[i]))
-                fail(path, "element " + std::to_string(i / size_t(components)) + " holds " +
-                               formatNumber(values[i]) + ", not a finite number");
+                fail(path, "element " + std::to_string(i / size_t(components)) + " holds " + formatNumber(values[i]) +
+                               ", not a finite number");
     }
 
     void checkPrimitive(const std::string& path, const tinygltf::Primitive& primitive) {
@@ -252,8 +234,7 @@ struct Validator {
         // A primitive without POSITION is valid glTF; the loader skips it with a warning. Its other
         // attributes are checked against the first one instead.
         const auto position = primitive.attributes.find("POSITION");
-        const auto reference =
-            position != primitive.attributes.end() ? position : primitive.attributes.begin();
+        const auto reference = position != primitive.attributes.end() ? position : primitive.attributes.begin();
         if (reference == primitive.attributes.end()) fail(path + ".attributes", "has no attributes");
 
         size_t vertexCount = 0;
@@ -262,18 +243,17 @@ struct Validator {
             checkReference(attributePath, accessorIndex, model.accessors.size(), "accessor", false);
             const tinygltf::Accessor& accessor = model.accessors[size_t(accessorIndex)];
             if (!attributeFormatAllowed(name, accessor))
-                fail(attributePath, "accessor " + std::to_string(accessorIndex) + " is " +
-                                        accessorTypeName(accessor.type) + " of " +
-                                        (accessor.normalized ? "normalized " : "") +
-                                        componentTypeName(accessor.componentType) +
-                                        ", which glTF does not allow for " + name);
+                fail(attributePath,
+                     "accessor " + std::to_string(accessorIndex) + " is " + accessorTypeName(accessor.type) + " of " +
+                         (accessor.normalized ? "normalized " : "") + componentTypeName(accessor.componentType) +
+                         ", which glTF does not allow for " + name);
             if (name == reference->first) vertexCount = accessor.count;
         }
         for (const auto& [name, accessorIndex] : primitive.attributes)
             if (model.accessors[size_t(accessorIndex)].count != vertexCount)
                 fail(path + ".attributes." + name,
-                     "has " + std::to_string(model.accessors[size_t(accessorIndex)].count) +
-                         " elements but " + reference->first + " has " + std::to_string(vertexCount));
+                     "has " + std::to_string(model.accessors[size_t(accessorIndex)].count) + " elements but " +
+                         reference->first + " has " + std::to_string(vertexCount));
         for (const char* name : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
             const auto attribute = primitive.attributes.find(name);
             if (attribute != primitive.attributes.end())
@@ -281,8 +261,8 @@ struct Validator {
         }
         for (size_t t = 0; t < primitive.targets.size(); ++t)
             for (const auto& [name, accessorIndex] : primitive.targets[t])
-                checkReference(at(path + ".targets", t) + "." + name, accessorIndex, model.accessors.size(),
-                               "accessor", false);
+                checkReference(at(path + ".targets", t) + "." + name, accessorIndex, model.accessors.size(), "accessor",
+                               false);
 
         if (primitive.indices != -1) checkIndices(path + ".indices", primitive.indices, vertexCount);
     }
@@ -291,21 +271,19 @@ struct Validator {
         checkReference(path, accessorIndex, model.accessors.size(), "accessor", false);
         const tinygltf::Accessor& accessor = model.accessors[size_t(accessorIndex)];
         const int component = accessor.componentType;
-        if (accessor.type != TINYGLTF_TYPE_SCALAR || (component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                                      component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                                      component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail(path, "accessor " + std::to_string(accessorIndex) + " is " +
-                           accessorTypeName(accessor.type) + " of " + componentTypeName(component) +
-                           "; indices must be SCALAR unsigned integers");
+        if (accessor.type != TINYGLTF_TYPE_SCALAR ||
+            (component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+             component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+            fail(path, "accessor " + std::to_string(accessorIndex) + " is " + accessorTypeName(accessor.type) + " of " +
+                           componentTypeName(component) + "; indices must be SCALAR unsigned integers");
         auto found = largestIndex.find(accessorIndex);
         if (found == largestIndex.end()) {
             const std::vector<uint32_t> indices = readIndices(path, accessorIndex);
-            found =
-                largestIndex.emplace(accessorIndex, *std::max_element(indices.begin(), indices.end())).first;
+            found = largestIndex.emplace(accessorIndex, *std::max_element(indices.begin(), indices.end())).first;
         }
         if (found->second >= vertexCount)
-            fail(path, "index " + std::to_string(found->second) + " is past the vertex count " +
-                           std::to_string(vertexCount));
+            fail(path,
+                 "index " + std::to_string(found->second) + " is past the vertex count " + std::to_string(vertexCount));
     }
 
     void checkMeshes() {
@@ -339,18 +317,16 @@ struct Validator {
             checkTextureReference(path + ".emissiveTexture", material.emissiveTexture);
             checkReference(path + ".normalTexture.index", material.normalTexture.index, model.textures.size(),
                            "texture", true);
-            checkReference(path + ".occlusionTexture.index", material.occlusionTexture.index,
-                           model.textures.size(), "texture", true);
-            checkExtensionNumber(material.extensions, path, "KHR_materials_emissive_strength",
-                                 "emissiveStrength", 0.0, std::numeric_limits<double>::max());
-            checkExtensionNumber(material.extensions, path, "KHR_materials_specular", "specularFactor", 0.0,
-                                 1.0);
+            checkReference(path + ".occlusionTexture.index", material.occlusionTexture.index, model.textures.size(),
+                           "texture", true);
+            checkExtensionNumber(material.extensions, path, "KHR_materials_emissive_strength", "emissiveStrength", 0.0,
+                                 std::numeric_limits<double>::max());
+            checkExtensionNumber(material.extensions, path, "KHR_materials_specular", "specularFactor", 0.0, 1.0);
         }
     }
 
     void checkExtensionNumber(const tinygltf::ExtensionMap& extensions, const std::string& path,
-                              const std::string& extension, const std::string& key, double min,
-                              double max) const {
+                              const std::string& extension, const std::string& key, double min, double max) const {
         const auto found = extensions.find(extension);
         if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key)) return;
         const tinygltf::Value& value = found->second.Get(key);
@@ -361,14 +337,13 @@ struct Validator {
 
     void checkTexturesAndImages() const {
         for (size_t i = 0; i < model.textures.size(); ++i) {
-            checkReference(at("textures", i) + ".source", model.textures[i].source, model.images.size(),
-                           "image", true);
-            checkReference(at("textures", i) + ".sampler", model.textures[i].sampler, model.samplers.size(),
-                           "sampler", true);
+            checkReference(at("textures", i) + ".source", model.textures[i].source, model.images.size(), "image", true);
+            checkReference(at("textures", i) + ".sampler", model.textures[i].sampler, model.samplers.size(), "sampler",
+                           true);
         }
         for (size_t i = 0; i < model.images.size(); ++i)
-            checkReference(at("images", i) + ".bufferView", model.images[i].bufferView,
-                           model.bufferViews.size(), "bufferView", true);
+            checkReference(at("images", i) + ".bufferView", model.images[i].bufferView, model.bufferViews.size(),
+                           "bufferView", true);
     }
 
     void checkCameras() const {
@@ -386,8 +361,7 @@ struct Validator {
                     (perspective.zfar != 0.0 && perspective.zfar <= perspective.znear))
                     fail(p + ".zfar", formatNumber(perspective.zfar) + " is not a distance beyond znear");
                 if (!std::isfinite(perspective.aspectRatio) || perspective.aspectRatio < 0.0)
-                    fail(p + ".aspectRatio",
-                         formatNumber(perspective.aspectRatio) + " is not a positive ratio");
+                    fail(p + ".aspectRatio", formatNumber(perspective.aspectRatio) + " is not a positive ratio");
             } else if (camera.type == "orthographic") {
                 const tinygltf::OrthographicCamera& ortho = camera.orthographic;
                 if (!allFinite({ortho.xmag, ortho.ymag, ortho.znear, ortho.zfar}))
@@ -411,8 +385,7 @@ struct Validator {
             checkNonNegative(path + ".range", light.range);
             if (light.type == "spot") {
                 checkNumber(path + ".spot.outerConeAngle", light.spot.outerConeAngle, 0.0, kPi / 2);
-                checkNumber(path + ".spot.innerConeAngle", light.spot.innerConeAngle, 0.0,
-                            light.spot.outerConeAngle);
+                checkNumber(path + ".spot.innerConeAngle", light.spot.innerConeAngle, 0.0, light.spot.outerConeAngle);
                 if (light.spot.innerConeAngle >= light.spot.outerConeAngle)
                     fail(path + ".spot.innerConeAngle", "must be smaller than outerConeAngle");
             }
@@ -423,11 +396,10 @@ struct Validator {
     int nodeLight(const std::string& path, const tinygltf::Node& node) const {
         const auto found = node.extensions.find("KHR_lights_punctual");
         if (found == node.extensions.end()) return -1;
-        const tinygltf::Value& light =
-            found->second.IsObject() ? found->second.Get("light") : tinygltf::Value();
+        const tinygltf::Value& light = found->second.IsObject() ? found->second.Get("light") : tinygltf::Value();
         if (!light.IsInt()) fail(path + ".extensions.KHR_lights_punctual.light", "is not a light index");
-        checkReference(path + ".extensions.KHR_lights_punctual.light", light.GetNumberAsInt(),
-                       model.lights.size(), "light", false);
+        checkReference(path + ".extensions.KHR_lights_punctual.light", light.GetNumberAsInt(), model.lights.size(),
+                       "light", false);
         return light.GetNumberAsInt();
     }
 
@@ -449,8 +421,7 @@ struct Validator {
                 const double length =
                     std::sqrt(node.rotation[0] * node.rotation[0] + node.rotation[1] * node.rotation[1] +
                               node.rotation[2] * node.rotation[2] + node.rotation[3] * node.rotation[3]);
-                if (!(length > 1e-6) || !std::isfinite(length))
-                    fail(path + ".rotation", "is not a unit quaternion");
+                if (!(length > 1e-6) || !std::isfinite(length)) fail(path + ".rotation", "is not a unit quaternion");
             }
             for (size_t c = 0; c < node.children.size(); ++c) {
                 const int child = node.children[c];
@@ -458,8 +429,7 @@ struct Validator {
                 checkReference(childPath, child, nodeCount, "node", false);
                 if (parent[size_t(child)] != -1)
                     fail(childPath, "node " + std::to_string(child) + " already has parent node " +
-                                        std::to_string(parent[size_t(child)]) +
-                                        "; a node may have only one parent");
+                                        std::to_string(parent[size_t(child)]) + "; a node may have only one parent");
                 parent[size_t(child)] = int(i);
             }
         }
@@ -499,8 +469,7 @@ struct Validator {
                 checkReference(path, node, model.nodes.size(), "node", false);
                 if (hasParent[size_t(node)])
                     fail(path, "node " + std::to_string(node) + " is a child, not a root node");
-                if (!listed.insert(node).second)
-                    fail(path, "node " + std::to_string(node) + " is listed twice");
+                if (!listed.insert(node).second) fail(path, "node " + std::to_string(node) + " is listed twice");
             }
         }
     }

@@ -53,11 +53,11 @@ struct Light {
     std::string name;
     LightType type = LightType::Point;
     glm::vec3 color{1.0f};
-    float intensity = 1.0f;          // cd for point/spot, lux for directional
-    glm::vec3 position{0.0f};        // point and spot
-    glm::vec3 direction{0, 0, -1};   // direction the light travels (node's −Z), directional and spot
-    float range = 0.0f;              // 0 = infinite
-    float innerConeAngle = 0.0f;     // spot, radians
+    float intensity = 1.0f;               // cd for point/spot, lux for directional
+    glm::vec3 position{0.0f};             // point and spot
+    glm::vec3 direction{0, 0, -1};        // direction the light travels (node's −Z), directional and spot
+    float range = 0.0f;                   // 0 = infinite
+    float innerConeAngle = 0.0f;          // spot, radians
     float outerConeAngle = 0.785398163f;  // spot, radians (π/4, the glTF default)
 };
 
@@ -67,9 +67,9 @@ struct Camera {
     glm::vec3 position{0.0f};
     glm::vec3 forward{0.0f, 0.0f, -1.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float yfov = 0.8f;    // radians, vertical
+    float yfov = 0.8f;  // radians, vertical
     float znear = 0.01f;
-    float zfar = 0.0f;    // 0 = infinite (glTF), the renderer then fits it to the scene
+    float zfar = 0.0f;  // 0 = infinite (glTF), the renderer then fits it to the scene
 };
 
 struct Bounds {
@@ -87,8 +87,8 @@ struct Scene {
     std::vector<Material> materials;          // never empty after loading (a default is added)
     std::vector<Texture> textures;
     std::vector<Light> lights;
-    std::vector<Camera> cameras;              // the first is the default view
-    std::vector<std::string> warnings;        // non-fatal problems met while loading
+    std::vector<Camera> cameras;        // the first is the default view
+    std::vector<std::string> warnings;  // non-fatal problems met while loading
 
     size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;

@@ -47,14 +47,15 @@ bool CameraControl::update(const CameraInput& input, Camera& camera) {
     }
     if (mode_ == Mode::Orbit) {
         if (input.scroll != 0.0f) {
-            orbitDistance_ = std::clamp(orbitDistance_ * std::pow(0.9f, input.scroll), 0.02f * sceneSize_,
-                                        20.0f * sceneSize_);
+            orbitDistance_ =
+                std::clamp(orbitDistance_ * std::pow(0.9f, input.scroll), 0.02f * sceneSize_, 20.0f * sceneSize_);
             changed = true;
         }
         if (changed) aimFromAngles(camera);
         return changed;
     }
-    if (input.scroll != 0.0f) speed_ = std::clamp(speed_ * std::pow(1.25f, input.scroll), 1e-3f * sceneSize_, 1e2f * sceneSize_);
+    if (input.scroll != 0.0f)
+        speed_ = std::clamp(speed_ * std::pow(1.25f, input.scroll), 1e-3f * sceneSize_, 1e2f * sceneSize_);
     if (changed) aimFromAngles(camera);
     const glm::vec3 forward = glm::normalize(camera.forward);
     const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));

@@ -11,10 +11,10 @@ namespace vct {
 // The keys and drags of one frame that move the camera.
 struct CameraInput {
     bool forward = false, back = false, left = false, right = false, down = false, up = false;
-    bool fast = false;            // Shift
-    glm::vec2 drag{0.0f};         // pixels the cursor moved with the look (fly) or orbit button held
-    float scroll = 0.0f;          // wheel notches, positive away from the user
-    float seconds = 0.0f;         // frame time the movement is scaled by
+    bool fast = false;     // Shift
+    glm::vec2 drag{0.0f};  // pixels the cursor moved with the look (fly) or orbit button held
+    float scroll = 0.0f;   // wheel notches, positive away from the user
+    float seconds = 0.0f;  // frame time the movement is scaled by
 };
 
 class CameraControl {

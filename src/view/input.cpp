@@ -42,9 +42,8 @@ void installInputCallbacks(GLFWwindow* window, InputState* state) {
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
         if (button >= 0 && button < 3) stateOf(w).buttons[button] = action == GLFW_PRESS;
     });
-    glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
-        stateOf(w).moveCursor(glm::vec2(float(x), float(y)));
-    });
+    glfwSetCursorPosCallback(
+        window, [](GLFWwindow* w, double x, double y) { stateOf(w).moveCursor(glm::vec2(float(x), float(y))); });
     glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) { stateOf(w).scroll += float(dy); });
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
         for (int i = 0; i < count; ++i) stateOf(w).droppedFiles.emplace_back(paths[i]);
@@ -61,9 +60,9 @@ int keyFromName(const std::string& rawName) {
         if (number >= 1 && number <= 12) return GLFW_KEY_F1 + number - 1;
     }
     static const std::map<std::string, int> named = {
-        {"left", GLFW_KEY_LEFT},   {"right", GLFW_KEY_RIGHT},        {"up", GLFW_KEY_UP},
-        {"down", GLFW_KEY_DOWN},   {"shift", GLFW_KEY_LEFT_SHIFT},   {"ctrl", GLFW_KEY_LEFT_CONTROL},
-        {"tab", GLFW_KEY_TAB},     {"space", GLFW_KEY_SPACE},        {"escape", GLFW_KEY_ESCAPE}};
+        {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT},      {"up", GLFW_KEY_UP},
+        {"down", GLFW_KEY_DOWN}, {"shift", GLFW_KEY_LEFT_SHIFT}, {"ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"tab", GLFW_KEY_TAB},   {"space", GLFW_KEY_SPACE},      {"escape", GLFW_KEY_ESCAPE}};
     const auto found = named.find(name);
     return found == named.end() ? -1 : found->second;
 }
@@ -94,7 +93,8 @@ std::vector<ScriptEvent> parseScript(const std::string& text) {
         for (std::string word; words >> word;) event.arguments.push_back(word);
         const size_t wanted = argumentCount(event.action);
         if (wanted == size_t(-1)) throw Error("script entry '" + line + "': unknown action '" + event.action + "'");
-        const bool optionalUi = event.action == "screenshot" && event.arguments.size() == 2 && event.arguments[1] == "ui";
+        const bool optionalUi =
+            event.action == "screenshot" && event.arguments.size() == 2 && event.arguments[1] == "ui";
         if (event.arguments.size() != wanted && !optionalUi)
             throw Error("script entry '" + line + "': '" + event.action + "' takes " + std::to_string(wanted) +
                         " argument(s)");

@@ -25,12 +25,12 @@ struct GLFWwindow;
 namespace vct {
 
 struct InputState {
-    std::set<int> keysHeld;           // GLFW key codes
-    std::vector<int> keysPressed;     // this frame, in order
+    std::set<int> keysHeld;                   // GLFW key codes
+    std::vector<int> keysPressed;             // this frame, in order
     bool buttons[3] = {false, false, false};  // GLFW_MOUSE_BUTTON_LEFT, RIGHT, MIDDLE
     glm::vec2 cursor{0.0f};
-    glm::vec2 cursorDelta{0.0f};      // this frame
-    float scroll = 0.0f;              // this frame
+    glm::vec2 cursorDelta{0.0f};  // this frame
+    float scroll = 0.0f;          // this frame
     std::vector<std::string> droppedFiles;
 
     void beginFrame();

@@ -51,10 +51,20 @@ static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout la
     const VkShaderModule vertex = loadShaderModule(context, "fullscreen.vert");
     const VkShaderModule fragment = loadShaderModule(context, "tonemap.frag");
     VkPipelineShaderStageCreateInfo stages[2]{};
-    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
-                 vertex, "main", nullptr};
-    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-                 fragment, "main", nullptr};
+    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_VERTEX_BIT,
+                 vertex,
+                 "main",
+                 nullptr};
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_FRAGMENT_BIT,
+                 fragment,
+                 "main",
+                 nullptr};
     const VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
@@ -149,9 +159,8 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
     DescriptorPush()
         .sampledImage(0, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.layout);
-    const TonemapPush push{{1.0f / float(extent.width), 1.0f / float(extent.height)},
-                           params.exposure,
-                           params.toneCurve ? 1u : 0u};
+    const TonemapPush push{
+        {1.0f / float(extent.width), 1.0f / float(extent.height)}, params.exposure, params.toneCurve ? 1u : 0u};
     vkCmdPushConstants(commands, tonemap_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDraw(commands, 3, 1, 0, 0);
 }

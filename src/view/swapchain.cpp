@@ -40,8 +40,7 @@ const char* presentModeName(VkPresentModeKHR mode) {
     }
 }
 
-Swapchain::Swapchain(GpuContext& context, VkSurfaceKHR surface, VkExtent2D wanted, bool vsync,
-                     VkSwapchainKHR previous)
+Swapchain::Swapchain(GpuContext& context, VkSurfaceKHR surface, VkExtent2D wanted, bool vsync, VkSwapchainKHR previous)
     : device_(context.device) {
     VkBool32 supported = VK_FALSE;
     VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice, context.queueFamily, surface, &supported));
@@ -73,10 +72,10 @@ Swapchain::Swapchain(GpuContext& context, VkSurfaceKHR surface, VkExtent2D wante
     info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (canCopyFrom ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0);
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = capabilities.currentTransform;
-    info.compositeAlpha = (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
-                              ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
-                              : VkCompositeAlphaFlagBitsKHR(capabilities.supportedCompositeAlpha &
-                                                            -capabilities.supportedCompositeAlpha);
+    info.compositeAlpha =
+        (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
+            ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+            : VkCompositeAlphaFlagBitsKHR(capabilities.supportedCompositeAlpha & -capabilities.supportedCompositeAlpha);
     info.presentMode = presentMode;
     info.clipped = VK_TRUE;
     info.oldSwapchain = previous;

@@ -23,7 +23,7 @@ public:
     VkExtent2D extent{};
     VkPresentModeKHR presentMode = VK_PRESENT_MODE_FIFO_KHR;
     uint32_t minImageCount = 2;
-    bool canCopyFrom = false;               // TRANSFER_SRC usage, for screenshots
+    bool canCopyFrom = false;  // TRANSFER_SRC usage, for screenshots
     std::vector<VkImage> images;
     std::vector<VkImageView> views;
     // One per image: a present waits on the semaphore of the image it shows, so a semaphore is

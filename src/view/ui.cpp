@@ -120,7 +120,10 @@ static void resolutionSection(ViewerState& state) {
     if (!ImGui::CollapsingHeader("Resolution")) return;
     ImGui::TextDisabled("all but the render scale build a new renderer");
     int scale = state.renderScale >= 1.0f ? 0 : state.renderScale >= 0.5f ? 1 : 2;
-    ImGui::Combo("render scale", &scale, "1 (window size)\0" "1/2\0" "1/4\0");
+    ImGui::Combo("render scale", &scale,
+                 "1 (window size)\0"
+                 "1/2\0"
+                 "1/4\0");
     state.renderScale = scale == 0 ? 1.0f : scale == 1 ? 0.5f : 0.25f;
     powerOfTwoCombo("voxels", settings.resources.voxelResolution, 32, 512);
     powerOfTwoCombo("sun shadow map", settings.resources.sunShadowMapSize, 256, 8192);

@@ -101,7 +101,7 @@ private:
     ViewerState state_;
     Scene scene_;
     size_t sunIndex_ = 0;
-    SunControl shownSun_;      // the sun the renderer has
+    SunControl shownSun_;  // the sun the renderer has
     Camera camera_;
     Camera lastRenderedCamera_;
     CameraControl cameraControl_;
@@ -109,7 +109,7 @@ private:
     bool swapchainStale_ = false;
     bool shownVsync_ = true;
     float shownRenderScale_ = 1.0f;
-    bool imageStale_ = true;   // the renderer must run this frame
+    bool imageStale_ = true;  // the renderer must run this frame
     bool quit_ = false;
     uint64_t iteration_ = 0;
     uint32_t framesDrawn_ = 0;
@@ -139,8 +139,8 @@ Viewer::Viewer(ViewerOptions options)
     state_.screenshotWithUi = options_.screenshotWithUi;
     // Software rasterizers shade a quarter of the pixels unless told otherwise: a camera move at
     // 960x540 costs seconds on lavapipe.
-    state_.renderScale = options_.renderScale > 0.0f ? options_.renderScale
-                                                     : (context_->isSoftwareRasterizer() ? 0.5f : 1.0f);
+    state_.renderScale =
+        options_.renderScale > 0.0f ? options_.renderScale : (context_->isSoftwareRasterizer() ? 0.5f : 1.0f);
     recreateSwapchain();
     presentPass_ = std::make_unique<PresentPass>(*context_, swapchain_->format);
     presentPass_->createFramebuffers(*swapchain_);
@@ -168,7 +168,8 @@ void Viewer::recreateSwapchain() {
     requestedExtent_ = {uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1))};
     if (swapchain_) VK_CHECK(vkDeviceWaitIdle(context_->device));
     const VkSwapchainKHR previous = swapchain_ ? swapchain_->swapchain : VK_NULL_HANDLE;
-    auto replacement = std::make_unique<Swapchain>(*context_, surface_->surface, requestedExtent_, state_.vsync, previous);
+    auto replacement =
+        std::make_unique<Swapchain>(*context_, surface_->surface, requestedExtent_, state_.vsync, previous);
     swapchain_ = std::move(replacement);
     shownVsync_ = state_.vsync;
     swapchainStale_ = false;
@@ -285,7 +286,9 @@ void Viewer::handleKeys(float seconds) {
             case GLFW_KEY_R: state_.requestCameraReset = true; break;
             case GLFW_KEY_O: state_.requestOrbitToggle = true; break;
             case GLFW_KEY_M: settings.shading.mode = RenderMode((uint32_t(settings.shading.mode) + 1) % 3); break;
-            case GLFW_KEY_V: settings.shading.debugView = DebugView((uint32_t(settings.shading.debugView) + 1) % debugViewCount); break;
+            case GLFW_KEY_V:
+                settings.shading.debugView = DebugView((uint32_t(settings.shading.debugView) + 1) % debugViewCount);
+                break;
             case GLFW_KEY_LEFT_BRACKET:
                 if (settings.shading.debugVoxelMip > 0) --settings.shading.debugVoxelMip;
                 break;
@@ -441,7 +444,9 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     const bool capture = !screenshotPath.empty() && swapchain_->canCopyFrom;
     const VkExtent2D extent = swapchain_->extent;
     Buffer pixels;
-    if (capture) pixels = Buffer(*context_, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    if (capture)
+        pixels =
+            Buffer(*context_, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
 
     VK_CHECK(vkResetFences(context_->device, 1, &frame.fence));
     VK_CHECK(vkResetCommandBuffer(frame.commands, 0));
@@ -462,7 +467,8 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
         const VkImage image = swapchain_->images[imageIndex];
         imageBarrier(frame.commands, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent.width, extent.height, 1};
@@ -589,8 +595,7 @@ bool Viewer::loopIteration() {
 }
 
 int Viewer::run() {
-    while (loopIteration()) {
-    }
+    while (loopIteration()) {}
     VK_CHECK(vkDeviceWaitIdle(context_->device));
     std::printf("vct view: %u frames drawn\n", framesDrawn_);
     if (!context_->validationMessages().empty()) throw Error("the validation layer reported problems (see above)");

@@ -15,7 +15,7 @@ namespace vct {
 struct ViewerOptions {
     Scene scene;
     std::string sceneName;
-    RenderSettings settings;       // width and height: the window's initial size
+    RenderSettings settings;  // width and height: the window's initial size
     ContextOptions context;
     double gpuTimeoutSeconds = 120.0;
     float exposure = 1.0f;

@@ -18,12 +18,12 @@ namespace vct {
 // Frame and pass times over the last frames, for the profiler window.
 struct FrameHistory {
     static constexpr size_t length = 120;
-    std::deque<float> frameMilliseconds;        // wall clock, loop iteration to loop iteration
-    std::deque<float> gpuMilliseconds;          // the renderer's passes, summed
-    std::map<std::string, float> passAverage;   // moving average of each pass over the frames it ran
-    FrameStats last;                            // the last frame the renderer drew
-    bool lastFrameIdle = false;                 // nothing changed: the renderer did not run
-    float presentMilliseconds = 0.0f;           // tone mapping + UI, GPU
+    std::deque<float> frameMilliseconds;       // wall clock, loop iteration to loop iteration
+    std::deque<float> gpuMilliseconds;         // the renderer's passes, summed
+    std::map<std::string, float> passAverage;  // moving average of each pass over the frames it ran
+    FrameStats last;                           // the last frame the renderer drew
+    bool lastFrameIdle = false;                // nothing changed: the renderer did not run
+    float presentMilliseconds = 0.0f;          // tone mapping + UI, GPU
 
     void add(float frameMs, const FrameStats& stats);
     float averageFrameMilliseconds() const;
@@ -34,26 +34,25 @@ struct ViewerState {
     // take a new Renderer, new image settings a resize, shading settings nothing.
     RenderSettings settings;
     float exposure = 1.0f;
-    float renderScale = 1.0f;               // renderer image size / window size
+    float renderScale = 1.0f;  // renderer image size / window size
     SunControl sun;
     bool showGuide = true;
     bool showPanels = true;
     bool vsync = true;
     bool screenshotWithUi = false;
 
-    std::string sceneName;                  // what is loaded now
-    char scenePathField[512] = {};          // the panel's text field
-    std::string requestedScene;             // set by the panel or a drop; loaded by the main loop
+    std::string sceneName;          // what is loaded now
+    char scenePathField[512] = {};  // the panel's text field
+    std::string requestedScene;     // set by the panel or a drop; loaded by the main loop
     bool requestScreenshot = false;
     bool requestCameraReset = false;
     bool requestOrbitToggle = false;
     bool cameraIsOrbiting = false;
     float cameraSpeed = 1.0f;
 
-    std::string error;                      // the last failure the user caused (a scene that did not load)
-    std::string notice;                     // e.g. where a screenshot went
+    std::string error;   // the last failure the user caused (a scene that did not load)
+    std::string notice;  // e.g. where a screenshot went
     FrameHistory history;
 };
-
 
 }  // namespace vct

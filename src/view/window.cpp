@@ -65,8 +65,7 @@ PresentCommands::~PresentCommands() {
     vkDestroyCommandPool(device, pool, nullptr);
 }
 
-ImGuiSession::ImGuiSession(GpuContext& context, GLFWwindow* window, const Swapchain& swapchain,
-                           VkRenderPass renderPass)
+ImGuiSession::ImGuiSession(GpuContext& context, GLFWwindow* window, const Swapchain& swapchain, VkRenderPass renderPass)
     : device(context.device) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();

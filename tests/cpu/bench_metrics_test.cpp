@@ -120,18 +120,19 @@ TEST(ParetoFront, IgnoresNonFinitePointsAndHandlesEmptyInput) {
 }
 
 TEST(SvgPlot, DrawsEveryPointTheFrontAndEscapesLabels) {
-    const std::string svg = plotErrorAgainstTime(
-        {{"a<b", 10.0, 0.1, true, ""}, {"c", 100.0, 0.01, true, "quality"}, {"d", 50.0, 0.5, false, ""},
-         {"skipped", 0.0, 1.0, false, ""}},
-        {"title", "x", "y", "note & more"});
+    const std::string svg = plotErrorAgainstTime({{"a<b", 10.0, 0.1, true, ""},
+                                                  {"c", 100.0, 0.01, true, "quality"},
+                                                  {"d", 50.0, 0.5, false, ""},
+                                                  {"skipped", 0.0, 1.0, false, ""}},
+                                                 {"title", "x", "y", "note & more"});
     EXPECT_EQ(svg.rfind("<svg", 0), 0u);
     EXPECT_NE(svg.find("</svg>"), std::string::npos);
     EXPECT_NE(svg.find("<polyline"), std::string::npos);
     EXPECT_NE(svg.find("a&lt;b"), std::string::npos);
     EXPECT_NE(svg.find("note &amp; more"), std::string::npos);
-    EXPECT_NE(svg.find("2 quality"), std::string::npos);  // a preset is labelled with its name
+    EXPECT_NE(svg.find("2 quality"), std::string::npos);        // a preset is labelled with its name
     EXPECT_NE(svg.find("2  c  (quality)"), std::string::npos);  // and so is its line in the key
-    EXPECT_EQ(svg.find("skipped"), std::string::npos);  // x = 0 has no place on a log axis
+    EXPECT_EQ(svg.find("skipped"), std::string::npos);          // x = 0 has no place on a log axis
     size_t circles = 0;
     for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
     EXPECT_EQ(circles, 3u + 3u);  // three points and the legend's three

@@ -66,8 +66,7 @@ TEST(FuzzRegressions, TheFuzzerSeedsLoadExceptTheOneWhoseBufferIsMissing) {
         const std::string refusal = loadAsTheFuzzerDoes(seed);
         if (seed.filename() == "quad_external_buffer.gltf")
             EXPECT_NE(refusal.find("buffers[0]"), std::string::npos) << refusal;
-        else
-            EXPECT_EQ(refusal, "") << seed.filename();
+        else EXPECT_EQ(refusal, "") << seed.filename();
     }
 }
 

@@ -51,15 +51,9 @@ void expectQuadLoadsWithIndexType(int componentType) {
     EXPECT_EQ(scene.triangleMaterials.size(), 2u);
 }
 
-TEST(GltfLoader, ReadsUnsignedByteIndices) {
-    expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
-}
-TEST(GltfLoader, ReadsUnsignedShortIndices) {
-    expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-}
-TEST(GltfLoader, ReadsUnsignedIntIndices) {
-    expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-}
+TEST(GltfLoader, ReadsUnsignedByteIndices) { expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE); }
+TEST(GltfLoader, ReadsUnsignedShortIndices) { expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT); }
+TEST(GltfLoader, ReadsUnsignedIntIndices) { expectQuadLoadsWithIndexType(TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT); }
 
 TEST(GltfLoader, NonIndexedPrimitiveUsesVerticesInOrder) {
     GltfBuilder gltf = test::triangleScene();
@@ -83,10 +77,8 @@ TEST(GltfLoader, AppliesNodeHierarchyTransforms) {
     // Parent: translate (10,0,0) · rotate 90° about +Y · scale 2. Child: a matrix translating (0,1,0).
     const float half = std::sqrt(0.5f);
     gltf.document["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1};
-    const int parent = gltf.addNode({{"translation", {10, 0, 0}},
-                                     {"rotation", {0, half, 0, half}},
-                                     {"scale", {2, 2, 2}},
-                                     {"children", {0}}});
+    const int parent = gltf.addNode(
+        {{"translation", {10, 0, 0}}, {"rotation", {0, half, 0, half}}, {"scale", {2, 2, 2}}, {"children", {0}}});
     gltf.setScene({parent});
     const Scene scene = loadBuilt(gltf);
     ASSERT_EQ(scene.triangleCount(), 1u);
@@ -159,8 +151,8 @@ TEST(GltfLoader, ReadsInterleavedAttributesThroughByteStride) {
     // position xyz + uv per vertex, 20 bytes apart.
     const std::vector<float> interleaved = {0, 0, 0, 0.1f, 0.2f, 1, 0, 0, 0.3f, 0.4f, 0, 1, 0, 0.5f, 0.6f};
     const int view = gltf.addBufferView(interleaved.data(), interleaved.size() * sizeof(float), 20);
-    const int positions = gltf.append(
-        "accessors", {{"bufferView", view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+    const int positions =
+        gltf.append("accessors", {{"bufferView", view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
     const int uvs = gltf.append(
         "accessors",
         {{"bufferView", view}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
@@ -216,8 +208,7 @@ TEST(GltfLoader, SkipsPrimitivesWithoutPositionWithAWarning) {
     const Scene scene = loadBuilt(gltf);
     EXPECT_EQ(scene.triangleCount(), 0u);
     ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("meshes[0].primitives[0].attributes: has no POSITION"),
-              std::string::npos)
+    EXPECT_NE(scene.warnings[0].find("meshes[0].primitives[0].attributes: has no POSITION"), std::string::npos)
         << scene.warnings[0];
 }
 
@@ -289,13 +280,12 @@ TEST(GltfLoader, MaterialsAreNeverEmpty) {
 
 TEST(GltfLoader, PlacesPerspectiveCameraInWorldSpace) {
     GltfBuilder gltf;
-    gltf.document["cameras"] = json::array(
-        {{{"type", "perspective"}, {"name", "main"}, {"perspective", {{"yfov", 0.6}, {"znear", 0.05}}}},
-         {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}, {"zfar", 100.0}}}}});
+    gltf.document["cameras"] =
+        json::array({{{"type", "perspective"}, {"name", "main"}, {"perspective", {{"yfov", 0.6}, {"znear", 0.05}}}},
+                     {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}, {"zfar", 100.0}}}}});
     const float half = std::sqrt(0.5f);
     // Turned 90° about +Y: local −Z (forward) becomes world −X.
-    const int first =
-        gltf.addNode({{"camera", 0}, {"translation", {1, 2, 3}}, {"rotation", {0, half, 0, half}}});
+    const int first = gltf.addNode({{"camera", 0}, {"translation", {1, 2, 3}}, {"rotation", {0, half, 0, half}}});
     const int second = gltf.addNode({{"camera", 1}, {"scale", {1, 3, 1}}});
     gltf.setScene({first, second});
     const Scene scene = loadBuilt(gltf);
@@ -314,9 +304,8 @@ TEST(GltfLoader, PlacesPerspectiveCameraInWorldSpace) {
 
 TEST(GltfLoader, SkipsOrthographicCamerasWithAWarning) {
     GltfBuilder gltf;
-    gltf.document["cameras"] =
-        json::array({{{"type", "orthographic"},
-                      {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}}});
+    gltf.document["cameras"] = json::array(
+        {{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}}});
     gltf.setScene({gltf.addNode({{"camera", 0}})});
     const Scene scene = loadBuilt(gltf);
     EXPECT_TRUE(scene.cameras.empty());
@@ -337,8 +326,8 @@ Scene sceneWithLight(const json& light) {
 }
 
 TEST(GltfLoader, PlacesDirectionalLightAlongNodeMinusZ) {
-    const Scene scene = sceneWithLight(
-        {{"type", "directional"}, {"color", {1.0, 0.9, 0.8}}, {"intensity", 3.5}, {"name", "sun"}});
+    const Scene scene =
+        sceneWithLight({{"type", "directional"}, {"color", {1.0, 0.9, 0.8}}, {"intensity", 3.5}, {"name", "sun"}});
     ASSERT_EQ(scene.lights.size(), 1u);
     const Light& light = scene.lights[0];
     EXPECT_EQ(light.type, LightType::Directional);
@@ -360,9 +349,8 @@ TEST(GltfLoader, PlacesPointLightAtNodeTranslation) {
 }
 
 TEST(GltfLoader, PlacesSpotLightWithConeAngles) {
-    const Scene scene = sceneWithLight({{"type", "spot"},
-                                        {"intensity", 100.0},
-                                        {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
+    const Scene scene = sceneWithLight(
+        {{"type", "spot"}, {"intensity", 100.0}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
     ASSERT_EQ(scene.lights.size(), 1u);
     const Light& light = scene.lights[0];
     EXPECT_EQ(light.type, LightType::Spot);
@@ -370,8 +358,7 @@ TEST(GltfLoader, PlacesSpotLightWithConeAngles) {
     expectNear(light.direction, {0, 1, 0});
     EXPECT_FLOAT_EQ(light.innerConeAngle, 0.2f);
     EXPECT_FLOAT_EQ(light.outerConeAngle, 0.5f);
-    EXPECT_FLOAT_EQ(sceneWithLight({{"type", "spot"}, {"spot", json::object()}}).lights[0].outerConeAngle,
-                    kPi / 4)
+    EXPECT_FLOAT_EQ(sceneWithLight({{"type", "spot"}, {"spot", json::object()}}).lights[0].outerConeAngle, kPi / 4)
         << "the glTF default outer cone";
 }
 
@@ -386,8 +373,7 @@ TEST(GltfLoader, LoadsBinaryGlb) {
 TEST(GltfLoader, LoadsBuffersFromDataUris) {
     GltfBuilder gltf = test::triangleScene();
     TempFolder folder;
-    const Scene scene =
-        loadGltf(gltf.writeGltf(folder, "scene", GltfBuilder::BufferStorage::DataUri).string());
+    const Scene scene = loadGltf(gltf.writeGltf(folder, "scene", GltfBuilder::BufferStorage::DataUri).string());
     ASSERT_EQ(scene.triangleCount(), 1u);
     expectNear(cornerOf(scene, 0, 2), {0, 1, 0});
     EXPECT_FALSE(std::filesystem::exists(folder.path / "scene.bin"));
@@ -397,8 +383,7 @@ TEST(GltfLoader, DecodesPercentEncodedUris) {
     GltfBuilder gltf = test::triangleScene();
     TempFolder folder;
     folder.write("my mesh+data.bin", gltf.bin);
-    gltf.document["buffers"] =
-        json::array({{{"uri", "my%20mesh%2Bdata.bin"}, {"byteLength", gltf.bin.size()}}});
+    gltf.document["buffers"] = json::array({{{"uri", "my%20mesh%2Bdata.bin"}, {"byteLength", gltf.bin.size()}}});
     const std::string path = folder.write("scene.gltf", gltf.document.dump()).string();
     EXPECT_EQ(loadGltf(path).triangleCount(), 1u);
 }
@@ -408,9 +393,8 @@ GltfBuilder texturedTriangle(const std::string& uri) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["images"] = json::array({{{"uri", uri}}});
     gltf.document["textures"] = json::array({{{"source", 0}}});
-    gltf.document["materials"] =
-        json::array({{{"pbrMetallicRoughness",
-                       {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {1, 0, 0, 1}}}}}});
+    gltf.document["materials"] = json::array(
+        {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {1, 0, 0, 1}}}}}});
     gltf.document["meshes"][0]["primitives"][0]["material"] = 0;
     return gltf;
 }

@@ -100,8 +100,7 @@ inline std::string encodePng(uint32_t width, uint32_t height, int channels, int 
     zlib += be32((b << 16) | a);
     const char colorType = channels == 4 ? 6 : 2;
     const std::string header = be32(width) + be32(height) + char(bitDepth) + colorType + std::string(3, '\0');
-    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", zlib) +
-           chunk("IEND", "");
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", zlib) + chunk("IEND", "");
 }
 
 // Builds a glTF document: JSON plus one binary buffer that the write functions place in a .bin
@@ -129,8 +128,7 @@ struct GltfBuilder {
     int addAccessor(const std::vector<T>& values, int componentType, const char* type, size_t count,
                     bool normalized = false) {
         const int view = addBufferView(values.data(), values.size() * sizeof(T));
-        json accessor = {
-            {"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}};
+        json accessor = {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}};
         if (normalized) accessor["normalized"] = true;
         return append("accessors", accessor);
     }
@@ -147,8 +145,7 @@ struct GltfBuilder {
         return addAccessor(flat, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC2", values.size());
     }
 
-    int addIndices(const std::vector<uint32_t>& indices,
-                   int componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+    int addIndices(const std::vector<uint32_t>& indices, int componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
         if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
             return addAccessor(std::vector<uint8_t>(indices.begin(), indices.end()), componentType, "SCALAR",
                                indices.size());
@@ -177,8 +174,7 @@ struct GltfBuilder {
     enum class BufferStorage { File, DataUri };
 
     // Writes NAME.gltf (and NAME.bin beside it unless the buffer is a data: URI).
-    fs::path writeGltf(const TempFolder& folder, const std::string& name,
-                       BufferStorage storage = BufferStorage::File) {
+    fs::path writeGltf(const TempFolder& folder, const std::string& name, BufferStorage storage = BufferStorage::File) {
         json copy = document;
         if (!bin.empty()) {
             const std::string uri = storage == BufferStorage::DataUri

@@ -64,8 +64,7 @@ TEST(GltfValidation, SceneFileOverTheSizeLimitIsRefused) {
 
 TEST(GltfValidation, BrokenJsonReportsTheParserMessage) {
     TempFolder folder;
-    const std::string path =
-        folder.write("broken.gltf", R"({"asset": {"version": "2.0"}, "nodes": [)").string();
+    const std::string path = folder.write("broken.gltf", R"({"asset": {"version": "2.0"}, "nodes": [)").string();
     expectRefused(path, "not a valid glTF file: ");
     expectRefused(path, "parse error at line 1, column 41");
 }
@@ -138,8 +137,7 @@ TEST(GltfValidation, NodeThatIsItsOwnChildIsRefused) {
 
 TEST(GltfValidation, NodeWithTwoParentsIsRefused) {
     GltfBuilder gltf = test::triangleScene();
-    gltf.document["scenes"][0]["nodes"] = {gltf.addNode({{"children", {0}}}),
-                                           gltf.addNode({{"children", {0}}})};
+    gltf.document["scenes"][0]["nodes"] = {gltf.addNode({{"children", {0}}}), gltf.addNode({{"children", {0}}})};
     expectRefused(gltf, "nodes[2].children[0]: node 0 already has parent node 1");
 }
 
@@ -236,8 +234,7 @@ TEST(GltfValidation, NegativeLightIntensityIsRefused) {
 TEST(GltfValidation, SpotConeWiderThanAHemisphereIsRefused) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["extensions"] = {
-        {"KHR_lights_punctual",
-         {{"lights", json::array({{{"type", "spot"}, {"spot", {{"outerConeAngle", 2.0}}}}})}}}};
+        {"KHR_lights_punctual", {{"lights", json::array({{{"type", "spot"}, {"spot", {{"outerConeAngle", 2.0}}}}})}}}};
     expectRefused(gltf, "lights[0].spot.outerConeAngle");
 }
 
@@ -296,8 +293,7 @@ TEST(GltfValidation, GlbImageBufferViewPastItsBufferIsRefused) {
 // ---- The file policy: buffer and image URIs stay inside the scene's folder.
 
 // The triangle scene whose buffer URI is `uri` (the .bin is written as scene.bin all the same).
-std::string sceneWithBufferUri(const TempFolder& folder, const std::string& uri,
-                               const std::string& subfolder = "") {
+std::string sceneWithBufferUri(const TempFolder& folder, const std::string& uri, const std::string& subfolder = "") {
     GltfBuilder gltf = test::triangleScene();
     folder.write(subfolder + "scene.bin", gltf.bin);
     gltf.document["buffers"] = json::array({{{"uri", uri}, {"byteLength", gltf.bin.size()}}});
@@ -306,15 +302,13 @@ std::string sceneWithBufferUri(const TempFolder& folder, const std::string& uri,
 
 TEST(GltfFilePolicy, AbsoluteUriIsRefused) {
     TempFolder folder;
-    expectRefused(sceneWithBufferUri(folder, "/etc/hostname"),
-                  "buffers[0].uri: '/etc/hostname' is an absolute path");
+    expectRefused(sceneWithBufferUri(folder, "/etc/hostname"), "buffers[0].uri: '/etc/hostname' is an absolute path");
 }
 
 TEST(GltfFilePolicy, UriEscapingTheFolderIsRefused) {
     TempFolder folder;
     folder.write("x.bin", std::string(64, '\0'));  // the target exists: the refusal is not "file not found"
-    expectRefused(sceneWithBufferUri(folder, "../../x.bin", "a/b/"),
-                  "'../../x.bin' leaves the allowed folder");
+    expectRefused(sceneWithBufferUri(folder, "../../x.bin", "a/b/"), "'../../x.bin' leaves the allowed folder");
     expectRefused(sceneWithBufferUri(folder, "%2E%2E/%2E%2E/x.bin", "a/b/"), "leaves the allowed folder");
 }
 
@@ -340,8 +334,7 @@ TEST(GltfFilePolicy, UriNamingAFifoIsRefusedWithoutBlocking) {
 
 TEST(GltfFilePolicy, UriWithAnotherSchemeIsRefused) {
     TempFolder folder;
-    expectRefused(sceneWithBufferUri(folder, "file:///etc/hostname"),
-                  "is not a relative path or a data: URI");
+    expectRefused(sceneWithBufferUri(folder, "file:///etc/hostname"), "is not a relative path or a data: URI");
 }
 
 TEST(GltfFilePolicy, BufferOverTheSizeLimitIsRefused) {
@@ -357,8 +350,7 @@ TEST(GltfFilePolicy, AllowedRootCanWidenTheFolder) {
     TempFolder folder;
     GltfBuilder gltf = test::triangleScene();
     folder.write("shared/mesh.bin", gltf.bin);
-    gltf.document["buffers"] =
-        json::array({{{"uri", "../shared/mesh.bin"}, {"byteLength", gltf.bin.size()}}});
+    gltf.document["buffers"] = json::array({{{"uri", "../shared/mesh.bin"}, {"byteLength", gltf.bin.size()}}});
     const std::string path = folder.write("scenes/scene.gltf", gltf.document.dump()).string();
     expectRefused(path, "leaves the allowed folder");
     LoadOptions options;
@@ -370,15 +362,13 @@ TEST(GltfFilePolicy, ImageOutsideTheFolderIsNotReadButWarned) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["images"] = json::array({{{"uri", "/etc/hostname"}}});
     gltf.document["textures"] = json::array({{{"source", 0}}});
-    gltf.document["materials"] =
-        json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    gltf.document["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
     gltf.document["meshes"][0]["primitives"][0]["material"] = 0;
     TempFolder folder;
     const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
     EXPECT_TRUE(scene.textures.empty());
     ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("'/etc/hostname' is an absolute path"), std::string::npos)
-        << scene.warnings[0];
+    EXPECT_NE(scene.warnings[0].find("'/etc/hostname' is an absolute path"), std::string::npos) << scene.warnings[0];
 }
 
 // ---- Public corpora (the Khronos glTF-Validator's test assets, tinygltf's past regressions), which CI

@@ -16,11 +16,11 @@ namespace vct::pt {
 namespace {
 
 // Tolerances, in one place.
-constexpr double kFurnaceMeanTolerance = 0.01;   // relative, image mean
-constexpr double kFurnacePixelNoise = 0.08;      // relative standard error of any pixel
-constexpr double kAnalyticPixelTolerance = 0.01; // relative, point light over a plane
-constexpr double kSigmas = 4.5;                  // agreement of independent estimates, in standard errors
-constexpr double kPdfIntegralTolerance = 0.005;  // absolute
+constexpr double kFurnaceMeanTolerance = 0.01;    // relative, image mean
+constexpr double kFurnacePixelNoise = 0.08;       // relative standard error of any pixel
+constexpr double kAnalyticPixelTolerance = 0.01;  // relative, point light over a plane
+constexpr double kSigmas = 4.5;                   // agreement of independent estimates, in standard errors
+constexpr double kPdfIntegralTolerance = 0.005;   // absolute
 constexpr double kSamplerTolerance = 0.03;
 
 Material lambertian(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
@@ -112,11 +112,13 @@ Scene makeTestRoom() {
     const uint32_t block = addMaterial(scene, plastic);
     const uint32_t lamp = addMaterial(scene, lambertian(glm::vec3(0.5f), glm::vec3(20.0f)));
     addInwardBox(scene, 1.0f, {red, white, floor, white, white, white});
-    addQuad(scene, {glm::vec3(-0.3f, -1.0f, -0.3f), glm::vec3(0.2f, -1.0f, -0.3f), glm::vec3(0.2f, -0.4f, -0.3f),
-                    glm::vec3(-0.3f, -0.4f, -0.3f)},
+    addQuad(scene,
+            {glm::vec3(-0.3f, -1.0f, -0.3f), glm::vec3(0.2f, -1.0f, -0.3f), glm::vec3(0.2f, -0.4f, -0.3f),
+             glm::vec3(-0.3f, -0.4f, -0.3f)},
             glm::vec3(0.0f, 0.0f, 1.0f), block);
-    addQuad(scene, {glm::vec3(-0.2f, 0.99f, -0.2f), glm::vec3(0.2f, 0.99f, -0.2f), glm::vec3(0.2f, 0.99f, 0.2f),
-                    glm::vec3(-0.2f, 0.99f, 0.2f)},
+    addQuad(scene,
+            {glm::vec3(-0.2f, 0.99f, -0.2f), glm::vec3(0.2f, 0.99f, -0.2f), glm::vec3(0.2f, 0.99f, 0.2f),
+             glm::vec3(-0.2f, 0.99f, 0.2f)},
             glm::vec3(0.0f), lamp);
     Light light;
     light.position = glm::vec3(0.5f, 0.5f, 0.3f);
@@ -190,8 +192,8 @@ glm::dvec3 planeIrradiance(const Light& light, const glm::vec3& p) {
     const glm::vec3 L = toLight / std::sqrt(d2);
     float falloff = glsl::rangeAttenuation(std::sqrt(d2), light.range);
     if (light.type == LightType::Spot) {
-        falloff *= glsl::spotAttenuation(glm::normalize(light.direction), -L, light.innerConeAngle,
-                                         light.outerConeAngle);
+        falloff *=
+            glsl::spotAttenuation(glm::normalize(light.direction), -L, light.innerConeAngle, light.outerConeAngle);
     }
     return glm::dvec3(light.color * light.intensity * falloff * std::max(0.0f, L.y) / d2);
 }
@@ -278,7 +280,7 @@ TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
     camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
     camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
-    camera.yfov = 2.0f * std::atan(0.5f);       // sees x, z ∈ [−½, ½]
+    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
     scene.cameras.push_back(camera);
     const PathTracer tracer = createPathTracer(scene);
     const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 2));
@@ -341,8 +343,11 @@ TEST(PathTracer, DirectPlusIndirectEqualsFull) {
     EXPECT_GT(indirect.meanLuminance, 0.1 * full.meanLuminance);
     // The whole image and each quadrant.
     const uint32_t h = kSize / 2;
-    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, kSize, kSize}, {0, 0, h, h}, {h, 0, kSize, h},
-                                  {0, h, h, kSize}, {h, h, kSize, kSize}}) {
+    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, kSize, kSize},
+                                  {0, 0, h, h},
+                                  {h, 0, kSize, h},
+                                  {0, h, h, kSize},
+                                  {h, h, kSize, kSize}}) {
         const Estimate f = regionLuminance(full, x0, y0, x1, y1);
         const Estimate d = regionLuminance(direct, x0, y0, x1, y1);
         const Estimate i = regionLuminance(indirect, x0, y0, x1, y1);
@@ -365,8 +370,11 @@ TEST(PathTracer, LightSamplingWithMisAgreesWithBrdfSamplingAlone) {
     ASSERT_TRUE(allFinite(mis.image) && allFinite(brdfOnly.image));
     EXPECT_LT(mis.meanLuminanceStandardError, brdfOnly.meanLuminanceStandardError);  // why MIS is used
     const uint32_t h = kSize / 2;
-    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, kSize, kSize}, {0, 0, h, h}, {h, 0, kSize, h},
-                                  {0, h, h, kSize}, {h, h, kSize, kSize}}) {
+    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, kSize, kSize},
+                                  {0, 0, h, h},
+                                  {h, 0, kSize, h},
+                                  {0, h, h, kSize},
+                                  {h, h, kSize, kSize}}) {
         const Estimate a = regionLuminance(mis, x0, y0, x1, y1);
         const Estimate b = regionLuminance(brdfOnly, x0, y0, x1, y1);
         EXPECT_NEAR(a.mean, b.mean, kSigmas * std::hypot(a.standardError, b.standardError))
@@ -382,8 +390,8 @@ TEST(Bvh, ClosestHitMatchesBruteForceOnRandomRays) {
     addMaterial(scene, lambertian(glm::vec3(0.5f)));
     for (int i = 0; i < 400; ++i) {
         const glm::vec3 center = randomPoint();
-        addTriangle(scene, center + 0.2f * randomPoint(), center + 0.2f * randomPoint(),
-                    center + 0.2f * randomPoint(), 0);
+        addTriangle(scene, center + 0.2f * randomPoint(), center + 0.2f * randomPoint(), center + 0.2f * randomPoint(),
+                    0);
     }
     // Zero-area triangles: never hit, never a NaN.
     const glm::vec3 p = randomPoint();
@@ -430,8 +438,9 @@ TEST(Bvh, WatertightGridLetsNoRayThroughSharedEdgesAndVertices) {
     for (int i = 0; i < kCells; ++i) {
         for (int j = 0; j < kCells; ++j) {
             const float x = 0.1f * float(i), z = 0.1f * float(j);
-            addQuad(scene, {glm::vec3(x, 0.3f, z), glm::vec3(x + 0.1f, 0.3f, z), glm::vec3(x + 0.1f, 0.3f, z + 0.1f),
-                            glm::vec3(x, 0.3f, z + 0.1f)},
+            addQuad(scene,
+                    {glm::vec3(x, 0.3f, z), glm::vec3(x + 0.1f, 0.3f, z), glm::vec3(x + 0.1f, 0.3f, z + 0.1f),
+                     glm::vec3(x, 0.3f, z + 0.1f)},
                     glm::vec3(x, 1.0f, z), 0);
         }
     }
@@ -440,8 +449,8 @@ TEST(Bvh, WatertightGridLetsNoRayThroughSharedEdgesAndVertices) {
     for (int i = 1; i < 2 * kCells; ++i) {
         for (int j = 1; j < 2 * kCells; ++j) {
             const glm::vec3 target(0.05f * float(i), 0.3f, 0.05f * float(j));
-            for (const glm::vec3 from : {glm::vec3(0.13f, 1.7f, -0.4f), glm::vec3(-1.0f, 2.0f, 0.3f),
-                                         glm::vec3(0.4f, -1.3f, 0.4f)}) {
+            for (const glm::vec3 from :
+                 {glm::vec3(0.13f, 1.7f, -0.4f), glm::vec3(-1.0f, 2.0f, 0.3f), glm::vec3(0.4f, -1.3f, 0.4f)}) {
                 const Ray ray{from, glm::normalize(target - from), 1e30f};
                 EXPECT_TRUE(closestHit(bvh, ray).has_value()) << i << "," << j;
             }
@@ -487,9 +496,9 @@ TEST(Bsdf, DensityIntegratesToTheShareOfSamplesAboveTheHorizon) {
     // Visible-normal samples reflected below the horizon are discarded, so the density over the
     // hemisphere integrates to the probability that a draw succeeds (1 for a pure diffuse lobe).
     const glm::vec3 N(0.0f, 0.0f, 1.0f);
-    for (SurfaceMaterial material : {SurfaceMaterial{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f},
-                                     SurfaceMaterial{glm::vec3(0.5f), 0.0f, 0.5f, 1.0f},
-                                     SurfaceMaterial{glm::vec3(0.5f), 0.0f, 0.5f, 0.0f}}) {
+    for (SurfaceMaterial material :
+         {SurfaceMaterial{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f}, SurfaceMaterial{glm::vec3(0.5f), 0.0f, 0.5f, 1.0f},
+          SurfaceMaterial{glm::vec3(0.5f), 0.0f, 0.5f, 0.0f}}) {
         for (float roughness : {0.5f, 0.75f, 1.0f}) {
             material.roughness = roughness;
             for (float NdotV : {0.2f, 0.7f, 1.0f}) {
@@ -517,8 +526,7 @@ TEST(Bsdf, SampledDirectionsFollowTheirDensity) {
                 EXPECT_NEAR(s.pdf, bsdfPdf(metal, N, V, s.direction), 1e-3f * s.pdf);
                 return double(s.direction.z) / s.pdf;
             });
-            EXPECT_NEAR(estimate.mean, kPi, kSamplerTolerance * kPi)
-                << "roughness " << roughness << " N·V " << NdotV;
+            EXPECT_NEAR(estimate.mean, kPi, kSamplerTolerance * kPi) << "roughness " << roughness << " N·V " << NdotV;
         }
     }
 }
@@ -539,8 +547,8 @@ TEST(Bsdf, WhiteMetalReflectsAtMostAllLightAndNeverNaN) {
                 << "roughness " << roughness << " N·V " << NdotV;
             EXPECT_GT(albedo.mean, 0.25) << "roughness " << roughness << " N·V " << NdotV;
             if (roughness >= 0.6f) {
-                const double reference = integrateHemisphere(
-                    [&](glm::vec3 L) { return double(evaluateBsdf(metal, N, V, L).x) * L.z; });
+                const double reference =
+                    integrateHemisphere([&](glm::vec3 L) { return double(evaluateBsdf(metal, N, V, L).x) * L.z; });
                 EXPECT_NEAR(albedo.mean, reference, kSigmas * albedo.standardError + 0.002)
                     << "roughness " << roughness << " N·V " << NdotV;
             }

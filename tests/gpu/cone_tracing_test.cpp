@@ -12,9 +12,9 @@
 #include "gpu/readback.h"
 #include "gpu_test.h"
 #include "gpu_types.h"
-#include "render/voxel_volumes.h"
 #include "render/mips_pass.h"
 #include "render/voxel_grid_fit.h"
+#include "render/voxel_volumes.h"
 
 namespace vct::test {
 namespace {
@@ -140,7 +140,8 @@ TEST_F(ConeTracing, MipsEqualCpuDownsampleWithinFloat16Rounding) {
                 for (uint32_t x = 0; x < size; ++x) {
                     glm::vec4 sum(0.0f);
                     for (int c = 0; c < 8; ++c)
-                        sum += expected[(2 * x + (c & 1)) + finer * ((2 * y + ((c >> 1) & 1)) + finer * (2 * z + (c >> 2)))];
+                        sum += expected[(2 * x + (c & 1)) +
+                                        finer * ((2 * y + ((c >> 1) & 1)) + finer * (2 * z + (c >> 2)))];
                     coarser[x + size * (y + size * z)] = sum * 0.125f;
                 }
         expected = coarser;
@@ -156,8 +157,9 @@ TEST_F(ConeTracing, MipsEqualCpuDownsampleWithinFloat16Rounding) {
 
 TEST_F(ConeTracing, EmptyGridGivesNoLightAndNoOcclusion) {
     buildVolume();
-    const std::vector<glm::vec4> results = trace({{glm::vec4(16, 16, 16, 1), glm::vec4(0, 1, 0, 0)},
-                                                  {glm::vec4(3, 5, 7, 0), glm::vec4(glm::normalize(glm::vec3(1, 1, 1)), 0.5f)}});
+    const std::vector<glm::vec4> results =
+        trace({{glm::vec4(16, 16, 16, 1), glm::vec4(0, 1, 0, 0)},
+               {glm::vec4(3, 5, 7, 0), glm::vec4(glm::normalize(glm::vec3(1, 1, 1)), 0.5f)}});
     for (const glm::vec4& result : results) EXPECT_EQ(result, glm::vec4(0.0f));
 }
 
@@ -171,8 +173,8 @@ TEST_F(ConeTracing, OpaqueWallInFrontGivesFullOcclusion) {
     buildVolume();
     // Three voxels below the wall, facing it: every diffuse cone (the 60° ones too) meets the wall
     // far from the grid's edges, and so does a narrow cone along the normal.
-    const std::vector<glm::vec4> results = trace({{glm::vec4(32, 17, 32, 1), glm::vec4(0, 1, 0, 0)},
-                                                  {glm::vec4(32, 17, 32, 0), glm::vec4(0, 1, 0, 0.05f)}});
+    const std::vector<glm::vec4> results = trace(
+        {{glm::vec4(32, 17, 32, 1), glm::vec4(0, 1, 0, 0)}, {glm::vec4(32, 17, 32, 0), glm::vec4(0, 1, 0, 0.05f)}});
     EXPECT_GT(results[0].a, 0.97f) << "diffuse cones";
     EXPECT_GT(results[1].a, 0.99f) << "narrow cone";
     EXPECT_EQ(glm::vec3(results[0]), glm::vec3(0.0f));

@@ -94,12 +94,13 @@ TEST_F(CornellDirect, LitPixelsMatchPointLightOverLambertianWithinOnePercentAndS
             const glm::vec3 toLight = light.position - hit->position;
             const float distance = glm::length(toLight);
             const float cosTheta = glm::dot(normal, toLight / distance);
-            e.shadowed = cosTheta <= 0 || intersect(scene, hit->position + normal * 1e-4f, toLight / distance,
-                                                    distance - 1e-4f).has_value();
+            e.shadowed =
+                cosTheta <= 0 ||
+                intersect(scene, hit->position + normal * 1e-4f, toLight / distance, distance - 1e-4f).has_value();
             const glm::vec3 albedo = glm::vec3(scene.materials[scene.triangleMaterials[hit->triangle]].baseColorFactor);
-            const glm::vec3 radiance = e.shadowed ? glm::vec3(0.0f)
-                                                  : light.intensity * light.color * cosTheta / (distance * distance) *
-                                                        albedo / kPi;
+            const glm::vec3 radiance =
+                e.shadowed ? glm::vec3(0.0f)
+                           : light.intensity * light.color * cosTheta / (distance * distance) * albedo / kPi;
             for (int c = 0; c < 3; ++c) e.radiance[c] = radiance[c];
         }
     }

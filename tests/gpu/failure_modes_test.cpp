@@ -23,12 +23,12 @@ namespace {
 //   32³…128³ falls to 5 %, but the coarse grids then start cones inside their own surface's voxel.
 // - flicker: 1 mm camera or light steps change 0.4–0.6 % of the image (relative L1).
 struct FailureBounds {
-    double leakRatio = 0.02;                // dark room / lit room mean luminance, ground truth 0
-    double resolutionSpread = 0.20;         // (max − min) / mean of the indirect luminance, 32³…256³
-    double groundTruthRatioLow = 0.55;      // indirect luminance / path-traced, each resolution
+    double leakRatio = 0.02;            // dark room / lit room mean luminance, ground truth 0
+    double resolutionSpread = 0.20;     // (max − min) / mean of the indirect luminance, 32³…256³
+    double groundTruthRatioLow = 0.55;  // indirect luminance / path-traced, each resolution
     double groundTruthRatioHigh = 1.10;
-    double cameraStepChange = 0.02;         // relative L1 change after a 1 mm camera move
-    double lightStepChange = 0.02;          // relative L1 change after a 1 mm light move
+    double cameraStepChange = 0.02;  // relative L1 change after a 1 mm camera move
+    double lightStepChange = 0.02;   // relative L1 change after a 1 mm light move
 };
 constexpr FailureBounds kBounds;
 
@@ -74,8 +74,7 @@ TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTrac
     reference.threads = 1;
     reference.camera = scene.cameras.front();
     const pt::RenderResult truth = pt::render(tracer, reference);
-    std::printf("[ drift ] path-traced indirect: %.4f ± %.4f\n", truth.meanLuminance,
-                truth.meanLuminanceStandardError);
+    std::printf("[ drift ] path-traced indirect: %.4f ± %.4f\n", truth.meanLuminance, truth.meanLuminanceStandardError);
 
     double lowest = 1e30, highest = 0.0, sum = 0.0;
     for (const bench::ResolutionLuminance& result : results) {

@@ -5,8 +5,8 @@
 
 #include "error.h"
 #include "gpu/vk_check.h"
-#include "gpu_types.h"
 #include "gpu_test.h"
+#include "gpu_types.h"
 #include "render/renderer.h"
 #include "render/renderer_limits.h"
 #include "scene/load.h"

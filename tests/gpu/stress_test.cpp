@@ -17,15 +17,15 @@ namespace vct::test {
 namespace {
 
 struct Tolerances {
-    double degenerateTriangles = 1e-6;   // relative L1 change from adding zero-area/collinear triangles
-    double zeroNormalsDirect = 0.01;     // relative L1, direct light, zero normals vs. face normals
-    double scaled = 0.02;                // relative L1, the Cornell box scaled by 1e-3 or 1e4 vs. 1
-    double translated = 0.03;            // relative L1, translated by +1e4 m vs. at the origin (positions
-                                         // stored in float there are 1 mm apart: 0.9 % direct, 2.4 % indirect)
-    double intensityLinearity = 1e-3;    // relative L1 between image / intensity at 1e-4 … 1e6 and at 1
-    double flatSceneIndirect = 0.01;     // indirect / direct mean of a lone plane (truth: 0)
-    double wallOnVoxelBoundary = 0.10;   // lit-room mean, wall on a voxel boundary vs. inside a voxel
-    double insideGeometry = 0.30;        // mean inside a closed block / usual view's (truth 0; measured 0.23)
+    double degenerateTriangles = 1e-6;  // relative L1 change from adding zero-area/collinear triangles
+    double zeroNormalsDirect = 0.01;    // relative L1, direct light, zero normals vs. face normals
+    double scaled = 0.02;               // relative L1, the Cornell box scaled by 1e-3 or 1e4 vs. 1
+    double translated = 0.03;           // relative L1, translated by +1e4 m vs. at the origin (positions
+                                        // stored in float there are 1 mm apart: 0.9 % direct, 2.4 % indirect)
+    double intensityLinearity = 1e-3;   // relative L1 between image / intensity at 1e-4 … 1e6 and at 1
+    double flatSceneIndirect = 0.01;    // indirect / direct mean of a lone plane (truth: 0)
+    double wallOnVoxelBoundary = 0.10;  // lit-room mean, wall on a voxel boundary vs. inside a voxel
+    double insideGeometry = 0.30;       // mean inside a closed block / usual view's (truth 0; measured 0.23)
 };
 constexpr Tolerances kTolerances;
 
@@ -158,8 +158,8 @@ TEST_F(Stress, FlatSceneWithZeroExtentAlongOneAxisLightsItselfNot) {
     Scene scene;
     scene.name = "lone floor";
     scene.materials.push_back(loadScene("cornell").materials[0]);
-    for (glm::vec3 p : {glm::vec3(-0.5f, 0, -0.5f), glm::vec3(0.5f, 0, -0.5f), glm::vec3(0.5f, 0, 0.5f),
-                        glm::vec3(-0.5f, 0, 0.5f)})
+    for (glm::vec3 p :
+         {glm::vec3(-0.5f, 0, -0.5f), glm::vec3(0.5f, 0, -0.5f), glm::vec3(0.5f, 0, 0.5f), glm::vec3(-0.5f, 0, 0.5f)})
         scene.vertices.push_back({p, 0.0f, {0, 1, 0}, 0.0f});
     scene.indices = {0, 1, 2, 0, 2, 3};
     scene.triangleMaterials = {0, 0};
@@ -248,8 +248,8 @@ TEST_F(Stress, GrazingViewsStayFiniteAndBounded) {
     const float brightest = *std::max_element(usual.rgb.begin(), usual.rgb.end());
     // Along the floor 1 mm above it, and edge-on to the red wall (x = 0.5528…0.556) from inside it.
     for (const auto& [position, forward] : {std::pair{glm::vec3(0.278f, 0.001f, -0.2f), glm::vec3(0, 0, 1)},
-                                          std::pair{glm::vec3(0.5544f, 0.274f, -0.2f), glm::vec3(0, 0, 1)},
-                                          std::pair{glm::vec3(0.278f, 0.274f, 0.1f), glm::vec3(1, 1e-4f, 0)}}) {
+                                            std::pair{glm::vec3(0.5544f, 0.274f, -0.2f), glm::vec3(0, 0, 1)},
+                                            std::pair{glm::vec3(0.278f, 0.274f, 0.1f), glm::vec3(1, 1e-4f, 0)}}) {
         Camera camera = renderer.camera();
         camera.position = position;
         camera.forward = forward;
@@ -279,8 +279,7 @@ TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight)
     direct.shading.mode = RenderMode::Direct;
     renderer.setShading(direct.shading);
     const double insideDirect = bench::meanLuminance(render(renderer, "inside the block, direct", false));
-    std::printf("[ stress ] inside the tall block: %.5f, direct %.5f (usual view %.4f)\n", inside, insideDirect,
-                usual);
+    std::printf("[ stress ] inside the tall block: %.5f, direct %.5f (usual view %.4f)\n", inside, insideDirect, usual);
     EXPECT_EQ(insideDirect, 0.0);
     EXPECT_LE(inside, kTolerances.insideGeometry * usual);
 }

@@ -9,8 +9,8 @@
 namespace vct {
 namespace {
 
-using test::GpuTest;
 using test::gpu;
+using test::GpuTest;
 
 class VoxelVolumesTest : public GpuTest {};
 
@@ -18,9 +18,8 @@ TEST_F(VoxelVolumesTest, EstimateIsWhatTheDeviceAllocates) {
     // The estimate counts texels; a device may pad each level, so it may allocate a little more,
     // but never less, and the padding must stay small next to the volume.
     for (const ResourceSettings resources :
-         {ResourceSettings{.voxelResolution = 32, .anisotropicVoxels = false},
-          ResourceSettings{.voxelResolution = 32}, ResourceSettings{.voxelResolution = 64, .bounces = 2},
-          ResourceSettings{.voxelResolution = 128}}) {
+         {ResourceSettings{.voxelResolution = 32, .anisotropicVoxels = false}, ResourceSettings{.voxelResolution = 32},
+          ResourceSettings{.voxelResolution = 64, .bounces = 2}, ResourceSettings{.voxelResolution = 128}}) {
         const VoxelVolumes volumes(gpu(), resources);
         const uint64_t estimate = voxelVolumeBytes(resources), allocated = volumes.allocatedBytes();
         std::printf("[ volumes ] %u³ %s, %u bounce(s): estimate %llu, allocated %llu bytes\n",

@@ -126,8 +126,7 @@ Comparison compareWithTwin(const VoxelImages& gpu, const VoxelReference& twin, d
         std::ostringstream problem;
         const glm::vec4 albedo = gpu.albedoOpacity[i], normal = gpu.normal[i], emission = gpu.emission[i];
         const float opacity = twin.count[i] > 0 ? 1.0f : 0.0f;
-        if (albedo.a != opacity)
-            problem << "opacity " << albedo.a << ", the twin says " << opacity;
+        if (albedo.a != opacity) problem << "opacity " << albedo.a << ", the twin says " << opacity;
         else if (normal.w != float(twin.count[i]))
             problem << "count " << normal.w << ", the twin says " << twin.count[i];
         for (int c = 0; c < 3 && problem.str().empty(); ++c) {

@@ -62,7 +62,8 @@ protected:
     // Runs `vct view` in `directory` on a small window with 64³ voxels; returns the exit code.
     int runViewer(const std::string& arguments) {
         const fs::path logPath = directory / "log.txt";
-        const std::string command = "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
+        const std::string command = "cd '" + directory.string() +
+                                    "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
                                     " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE
                                     " view --validate --no-guide --voxels 64 --shadow-map 512 "
                                     "--width 320 --height 180 " +
@@ -101,9 +102,10 @@ TEST_F(View, ScreenshotWithTheUiShowsThePanels) {
 }
 
 TEST_F(View, FlyingAndLookingMoveTheCamera) {
-    const std::string events = std::string(hidePanels) +
-                               "1 screenshot before.png; 2 key W down; 6 key W up; 6 mouse 160 90;"
-                               "7 button right down; 7 mouse 200 100; 8 button right up; 9 screenshot after.png; 10 quit";
+    const std::string events =
+        std::string(hidePanels) +
+        "1 screenshot before.png; 2 key W down; 6 key W up; 6 mouse 160 90;"
+        "7 button right down; 7 mouse 200 100; 8 button right up; 9 screenshot after.png; 10 quit";
     ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
     EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << log;
 }
@@ -133,7 +135,8 @@ TEST_F(View, MovingTheSunReinjectsLightWithoutRevoxelizing) {
     EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.01);
     // Frame 0 builds everything; a frame that moved the sun re-injects but keeps the voxels.
     EXPECT_NE(log.find("frame 0: ran shadow voxelize inject"), std::string::npos) << log;
-    EXPECT_NE(log.find("frame 5: ran shadow inject mips gbuffer shade resolve; skipped voxelize bounce\n"), std::string::npos)
+    EXPECT_NE(log.find("frame 5: ran shadow inject mips gbuffer shade resolve; skipped voxelize bounce\n"),
+              std::string::npos)
         << log;
 }
 

@@ -47,8 +47,8 @@ float bsdfPdf(const SurfaceMaterial& m, const glm::vec3& N, const glm::vec3& V, 
     return pdf;
 }
 
-std::optional<BsdfSample> sampleBsdf(const SurfaceMaterial& m, const glm::vec3& N, const glm::vec3& V,
-                                     float uLobe, float u1, float u2) {
+std::optional<BsdfSample> sampleBsdf(const SurfaceMaterial& m, const glm::vec3& N, const glm::vec3& V, float uLobe,
+                                     float u1, float u2) {
     const Frame frame = Frame::around(N);
     const glm::vec3 viewLocal = frame.toLocal(V);
     if (viewLocal.z <= 1e-6f) return std::nullopt;

@@ -28,8 +28,7 @@ struct BsdfSample {
 float specularLobeProbability(const SurfaceMaterial& material, float NdotV);
 
 // f(V, L) for unit N, V, L (the shared GLSL function).
-glm::vec3 evaluateBsdf(const SurfaceMaterial& material, const glm::vec3& N, const glm::vec3& V,
-                       const glm::vec3& L);
+glm::vec3 evaluateBsdf(const SurfaceMaterial& material, const glm::vec3& N, const glm::vec3& V, const glm::vec3& L);
 
 // The density sampleBsdf draws L with, per unit solid angle.
 float bsdfPdf(const SurfaceMaterial& material, const glm::vec3& N, const glm::vec3& V, const glm::vec3& L);

@@ -72,8 +72,7 @@ struct Builder {
     }
 
     // Partitions primitives[begin, end) and returns where the right half starts, or `end` for a leaf.
-    uint32_t splitPoint(uint32_t begin, uint32_t end, const Aabb& bounds, const Aabb& centroids,
-                        uint32_t depth) {
+    uint32_t splitPoint(uint32_t begin, uint32_t end, const Aabb& bounds, const Aabb& centroids, uint32_t depth) {
         const uint32_t count = end - begin;
         int bestAxis = -1, bestBin = 0;
         float bestCost = FLT_MAX;
@@ -115,11 +114,10 @@ struct Builder {
         const float splitCost = kTraversalCost * bounds.halfArea() + bestCost;
         if (bestAxis >= 0 && (splitCost < leafCost || count > kMaxLeafSize)) {
             const float extent = centroids.max[bestAxis] - centroids.min[bestAxis];
-            auto middle = std::partition(primitives.begin() + begin, primitives.begin() + end,
-                                         [&](const BuildPrimitive& p) {
-                                             return binOf(p.centroid[bestAxis], centroids.min[bestAxis], extent) <=
-                                                    bestBin;
-                                         });
+            auto middle =
+                std::partition(primitives.begin() + begin, primitives.begin() + end, [&](const BuildPrimitive& p) {
+                    return binOf(p.centroid[bestAxis], centroids.min[bestAxis], extent) <= bestBin;
+                });
             return uint32_t(middle - primitives.begin());
         }
         if (count <= kMaxLeafSize) return end;
@@ -127,10 +125,9 @@ struct Builder {
         const glm::vec3 extent = centroids.max - centroids.min;
         const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
         const uint32_t middle = begin + count / 2;
-        std::nth_element(primitives.begin() + begin, primitives.begin() + middle, primitives.begin() + end,
-                         [axis](const BuildPrimitive& a, const BuildPrimitive& b) {
-                             return a.centroid[axis] < b.centroid[axis];
-                         });
+        std::nth_element(
+            primitives.begin() + begin, primitives.begin() + middle, primitives.begin() + end,
+            [axis](const BuildPrimitive& a, const BuildPrimitive& b) { return a.centroid[axis] < b.centroid[axis]; });
         return middle;
     }
 
@@ -143,8 +140,8 @@ struct Builder {
 // The per-ray constants of the watertight test (Woop et al. 2013, section 3) and of the slab test.
 struct PreparedRay {
     glm::vec3 origin;
-    int kx, ky, kz;        // axes permuted so that z is the dominant direction component
-    float sx, sy, sz;      // shear that maps the ray direction to +z
+    int kx, ky, kz;    // axes permuted so that z is the dominant direction component
+    float sx, sy, sz;  // shear that maps the ray direction to +z
     glm::vec3 inverseDirection;
 };
 
@@ -285,8 +282,8 @@ Bvh buildBvh(const Scene& scene) {
     bvh.nodes = std::move(builder.nodes);
     for (const BuildPrimitive& primitive : builder.primitives) {
         const uint32_t* index = &scene.indices[3 * primitive.id];
-        bvh.triangles.push_back({scene.vertices[index[0]].position, scene.vertices[index[1]].position,
-                                 scene.vertices[index[2]].position});
+        bvh.triangles.push_back(
+            {scene.vertices[index[0]].position, scene.vertices[index[1]].position, scene.vertices[index[2]].position});
         bvh.triangleIds.push_back(primitive.id);
     }
     return bvh;

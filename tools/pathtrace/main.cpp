@@ -154,8 +154,8 @@ int run(int argc, char** argv) {
     const std::string json =
         "{\n  \"scene\": " + vct::jsonString(options.scene) + ",\n  \"mode\": \"" + modeName(s.component) +
         "\",\n  \"width\": " + std::to_string(s.width) + ",\n  \"height\": " + std::to_string(s.height) +
-        ",\n  \"spp\": " + std::to_string(result.samplesPerPixel) + ",\n  \"spp_requested\": " +
-        std::to_string(s.samplesPerPixel) + ",\n  \"seed\": " + std::to_string(s.seed) +
+        ",\n  \"spp\": " + std::to_string(result.samplesPerPixel) +
+        ",\n  \"spp_requested\": " + std::to_string(s.samplesPerPixel) + ",\n  \"seed\": " + std::to_string(s.seed) +
         ",\n  \"threads\": " + std::to_string(threads) + ",\n  \"seconds\": " + sidecarNumber(result.seconds) +
         ",\n  \"mean_luminance\": " + sidecarNumber(result.meanLuminance) +
         ",\n  \"mean_luminance_standard_error\": " + sidecarNumber(result.meanLuminanceStandardError) +

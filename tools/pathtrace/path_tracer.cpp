@@ -18,7 +18,7 @@ namespace {
 
 constexpr uint32_t kRouletteStartDepth = 3;
 constexpr uint32_t kSamplesPerPass = 4;
-constexpr double kRelativeNoiseEpsilon = 0.01;  // keeps black pixels from dividing by zero
+constexpr double kRelativeNoiseEpsilon = 0.01;         // keeps black pixels from dividing by zero
 constexpr uint64_t kPixelOffsetStream = ~uint64_t(0);  // a stream no sample index reaches
 
 float luminance(const glm::vec3& c) { return glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
@@ -86,8 +86,8 @@ TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, f
     const glm::vec3 shading = b0 * v0.normal + b1 * v1.normal + b2 * v2.normal;
     const float shadingLength = glm::length(shading);
     point.geometricNormal = crossLength > 0.0f ? cross / crossLength : glm::vec3(0.0f, 0.0f, 1.0f);
-    point.shadingNormal = shadingLength > 1e-12f && std::isfinite(shadingLength) ? shading / shadingLength
-                                                                                   : point.geometricNormal;
+    point.shadingNormal =
+        shadingLength > 1e-12f && std::isfinite(shadingLength) ? shading / shadingLength : point.geometricNormal;
     return point;
 }
 
@@ -158,8 +158,8 @@ SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::v
     s.toViewer = -rayDirection;
     const bool frontFace = glm::dot(point.shadingNormal, s.toViewer) > 0.0f;
     s.shadingNormal = frontFace ? point.shadingNormal : -point.shadingNormal;
-    s.geometricNormal = glm::dot(point.geometricNormal, s.toViewer) >= 0.0f ? point.geometricNormal
-                                                                             : -point.geometricNormal;
+    s.geometricNormal =
+        glm::dot(point.geometricNormal, s.toViewer) >= 0.0f ? point.geometricNormal : -point.geometricNormal;
     s.emission = frontFace ? material.emission : glm::vec3(0.0f);
     glm::vec3 baseColor = glm::vec3(material.baseColorFactor);
     if (material.baseColorTexture >= 0 && size_t(material.baseColorTexture) < tracer.textures.size()) {
@@ -229,9 +229,9 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
     const EmitterTable& emitters = tracer.emitters;
     const float uPick = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
     if (emitters.triangles.empty()) return glm::vec3(0.0f);
-    const size_t index = std::min(size_t(std::upper_bound(emitters.cdf.begin(), emitters.cdf.end(), uPick) -
-                                         emitters.cdf.begin()),
-                                  emitters.triangles.size() - 1);
+    const size_t index =
+        std::min(size_t(std::upper_bound(emitters.cdf.begin(), emitters.cdf.end(), uPick) - emitters.cdf.begin()),
+                 emitters.triangles.size() - 1);
     const uint32_t triangle = emitters.triangles[index];
     // Uniform point on the triangle (PBRT-v3 §13.6.5).
     const float root = std::sqrt(u1);
@@ -246,8 +246,8 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
     if (cosLight < 1e-6f) return glm::vec3(0.0f);
     const glm::vec3 reflected = reflectedTowards(s, L);
     if (isBlack(reflected)) return glm::vec3(0.0f);
-    const glm::vec3 lightSide = glm::dot(light.geometricNormal, L) < 0.0f ? light.geometricNormal
-                                                                         : -light.geometricNormal;
+    const glm::vec3 lightSide =
+        glm::dot(light.geometricNormal, L) < 0.0f ? light.geometricNormal : -light.geometricNormal;
     if (!unoccluded(tracer, s, offsetRayOrigin(light.position, lightSide))) return glm::vec3(0.0f);
 
     const float lightPdf = emitters.areaPdf[triangle] * distanceSquared / cosLight;
@@ -384,8 +384,8 @@ RenderResult render(const PathTracer& tracer, const RenderSettings& settings) {
                     for (uint32_t sample = done; sample < end; ++sample) {
                         Rng rng = Rng::forSample(settings.seed, pixel, sample);
                         const glm::vec2 jitter = pixelJitter(offset, sample);
-                        const Ray ray = cameraRay(settings.camera, width, height, float(x) + jitter.x,
-                                                  float(y) + jitter.y);
+                        const Ray ray =
+                            cameraRay(settings.camera, width, height, float(x) + jitter.x, float(y) + jitter.y);
                         glm::vec3 radiance = tracePath(tracer, ray, settings.component, rng);
                         if (!std::isfinite(radiance.x + radiance.y + radiance.z)) {
                             ++discarded;
@@ -423,8 +423,7 @@ RenderResult render(const PathTracer& tracer, const RenderSettings& settings) {
         // Unbiased sample variance of the luminance, divided by n: the variance of the pixel's mean.
         const double meanLuminance = luminanceSums[pixel] / n;
         const double sampleVariance =
-            done > 1 ? std::max(0.0, luminanceSquares[pixel] / n - meanLuminance * meanLuminance) * n / (n - 1.0)
-                     : 0.0;
+            done > 1 ? std::max(0.0, luminanceSquares[pixel] / n - meanLuminance * meanLuminance) * n / (n - 1.0) : 0.0;
         result.luminanceVariance[pixel] = float(sampleVariance / n);
         luminanceTotal += meanLuminance;
         varianceTotal += sampleVariance / n;

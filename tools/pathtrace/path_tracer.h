@@ -72,11 +72,11 @@ struct RenderSettings {
 };
 
 struct RenderResult {
-    Image image;                           // mean radiance per pixel
+    Image image;  // mean radiance per pixel
     // Estimated variance of each pixel's mean luminance, from its samples' spread as if they were
     // independent: an upper bound, since the pixel positions are stratified.
     std::vector<float> luminanceVariance;
-    uint32_t samplesPerPixel = 0;          // fewer than asked when the time limit stopped the render
+    uint32_t samplesPerPixel = 0;  // fewer than asked when the time limit stopped the render
     double seconds = 0.0;
     double meanLuminance = 0.0;
     double meanLuminanceStandardError = 0.0;  // of meanLuminance, from the per-pixel variances

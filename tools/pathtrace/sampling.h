@@ -57,8 +57,8 @@ struct Frame {
         const float sign = std::copysign(1.0f, n.z);
         const float a = -1.0f / (sign + n.z);
         const float b = n.x * n.y * a;
-        return {glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x),
-                glm::vec3(b, sign + n.y * n.y * a, -n.y), n};
+        return {glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), glm::vec3(b, sign + n.y * n.y * a, -n.y),
+                n};
     }
     glm::vec3 toLocal(const glm::vec3& v) const {
         return {glm::dot(v, tangent), glm::dot(v, bitangent), glm::dot(v, normal)};
