@@ -88,6 +88,21 @@ case "$case_name" in
     head -c 8 "$good" | grep -q PNG || fail "the output is not a PNG"
     cp "$good" "$work/expected"
     echo "ok: replaced the earlier image with a PNG" ;;
+  cone-distance-out-of-range)
+    expect_refusal "\-\-cone-max-distance must be a number from 0.01 to 2, not '5'" --cone-max-distance 5 \
+      --out "$good" ;;
+  help-names-every-option-once)
+    # The help is made from the option table: each option appears once, settings with their default.
+    "$vct" render --help >"$work/stdout" 2>"$work/stderr" || fail "--help failed"
+    for option in --out --preset --voxels --cone-max-distance --disable --scene --validate; do
+      count=$(grep -c -- "^  $option " "$work/stdout")
+      [ "$count" -eq 1 ] || fail "--help names $option $count times"
+    done
+    grep -q -- "^  --voxels N .*(default 128)$" "$work/stdout" || fail "--help does not give --voxels' default"
+    grep -q -- "^  --cones N .*(default 6)$" "$work/stdout" || fail "--help does not give --cones' default"
+    "$vct" view --help >"$work/stdout" 2>"$work/stderr" || fail "view --help failed"
+    grep -q -- "^  --width W .*(default 960)$" "$work/stdout" || fail "view --help does not give its own width"
+    echo "ok: the help lists each option once with its default" ;;
   *)
     echo "unknown case $case_name"; exit 2 ;;
 esac
