@@ -21,7 +21,7 @@ namespace vct {
 // Device-local bytes the renderer's images and buffers need for `scene` and `settings`, estimated
 // from their formats (the voxelizer's work list, which depends on the triangles' sizes, is left out).
 struct RendererMemoryEstimate {
-    uint64_t voxels = 0;        // voxelizer images and sums, radiance volume with its mips
+    uint64_t voxels = 0;        // VoxelVolumes (voxelVolumeBytes) and the voxelizer's sums
     uint64_t shadowMaps = 0;    // sun and local shadow-map arrays
     uint64_t imageTargets = 0;  // G-buffer, shading and resolve targets
     uint64_t scene = 0;         // vertex, index, material buffers and textures
