@@ -24,9 +24,9 @@ void main() {
     if (index >= probeCount) return;
     ConeProbe probe = probes[index];
     if (probe.origin.w > 0.5f) {
-        results[index] = traceDiffuseCones(probe.origin.xyz, probe.direction.xyz);
+        results[index] = traceDiffuseCones(probe.origin.xyz, probe.direction.xyz, NO_SURFACE);
     } else {
-        ConeResult cone = traceCone(probe.origin.xyz, probe.direction.xyz, probe.direction.w);
+        ConeResult cone = traceCone(probe.origin.xyz, probe.direction.xyz, probe.direction.w, NO_SURFACE, 0.0f);
         results[index] = vec4(cone.radiance, cone.occlusion);
     }
 }

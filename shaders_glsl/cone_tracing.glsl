@@ -30,10 +30,20 @@ struct ConeResult {
 };
 
 // Marches one cone from `origin` (world) along unit `direction`. The sample footprint grows with
-// distance: diameter = 2·tan(half-aperture)·distance, sampled at mip log2(diameter). Samples are
-// composited front to back; each step's opacity is corrected for the step length so that the
-// result does not depend on the step size (1 − (1 − α)^(step / diameter)).
-ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
+// distance: diameter = 2·tan(half-aperture)·distance, sampled at mip log2(diameter) unless that
+// would reach back to the cone's own surface (below). Samples are composited front to back; each
+// step's opacity is corrected for the step length against the size of the texel it was filtered
+// from, 1 − (1 − α)^(step / texel): a stored α is one texel's worth of opacity, so an opaque wall
+// stays opaque, and a partial one as partial, at every step size.
+// Self-occlusion: past a few voxels a cone's footprint (and the coarse texel it samples) reaches
+// back to the surface it left, whose own voxels would then block it and lend it their light. So
+// the level is kept fine enough that the sample stays SELF_CLEARANCE texels clear of that surface:
+// `startHeight` is the origin's height above it (voxels), `heightRate` = dot(direction, normal).
+// Probes with no surface pass a huge startHeight.
+const float SELF_CLEARANCE = 1.5f;
+const float NO_SURFACE = 1e9f;
+
+ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float startHeight, float heightRate) {
     VoxelGridParams grid = frame.grid;
     float resolution = float(grid.resolution.x);
     float maxLod = float(grid.resolution.y - 1u);
@@ -50,7 +60,11 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
     float distance = 0.5f;  // the origin is already offset from the surface
     for (int i = 0; i < 512 && distance < maxDistance && alpha < stopOpacity; ++i) {
         float diameter = max(1.0f, 2.0f * tanHalfAperture * distance);
-        float lod = min(log2(diameter), maxLod);
+        // Fine enough that even the next coarser level, which trilinear filtering blends in, stays
+        // SELF_CLEARANCE texels above the cone's own surface.
+        float height = startHeight + distance * heightRate;
+        float clearLod = log2(max(height / SELF_CLEARANCE, 1.0f)) - 1.0f;
+        float lod = clamp(min(log2(diameter), clearLod), 0.0f, maxLod);
         vec3 position = start + direction * distance;
         // Stop once the footprint has left the grid (outside is transparent black): a cone that
         // stopped when its centre left would skip a wall lying in the grid's last voxels.
@@ -72,7 +86,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture) {
 
         vec4 voxel = sampleVoxels(uvw, lod, direction);
         if (voxel.a > 0.0f) {
-            float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / diameter);
+            float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / exp2(lod));
             vec3 correctedColor = voxel.rgb * (correctedAlpha / voxel.a);
             color += (1.0f - alpha) * correctedColor;
             occlusion += (1.0f - occlusion) * correctedAlpha / (1.0f + falloff * distance);
@@ -96,7 +110,7 @@ vec3 perpendicular(vec3 n) {
 // twice the half-aperture from the normal (60° for the default 60° cones), so neighbouring
 // cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
 // irradiance is π·Σ wᵢ·Lᵢ. Returns the weighted radiance (rgb) and the weighted occlusion (a).
-vec4 traceDiffuseCones(vec3 origin, vec3 normal) {
+vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
     uint count = max(frame.diffuseConeCount, 1u);
     float tanHalf = frame.coneTanHalfAperture;
     float centreWeight = count == 1u ? 1.0f : frame.diffuseCentreWeight;
@@ -105,14 +119,14 @@ vec4 traceDiffuseCones(vec3 origin, vec3 normal) {
     vec3 tangent = perpendicular(normal);
     vec3 bitangent = cross(normal, tangent);
 
-    ConeResult centre = traceCone(origin, normal, tanHalf);
+    ConeResult centre = traceCone(origin, normal, tanHalf, startHeight, 1.0f);
     vec3 radiance = centreWeight * centre.radiance;
     float occlusion = centreWeight * centre.occlusion;
     for (uint i = 1u; i < count; ++i) {
         float azimuth = 6.28318530718f * float(i - 1u) / float(count - 1u);
         vec3 around = cos(azimuth) * tangent + sin(azimuth) * bitangent;
         vec3 direction = normalize(cos(ringAngle) * normal + sin(ringAngle) * around);
-        ConeResult side = traceCone(origin, direction, tanHalf);
+        ConeResult side = traceCone(origin, direction, tanHalf, startHeight, dot(direction, normal));
         radiance += sideWeight * side.radiance;
         occlusion += sideWeight * side.occlusion;
     }

@@ -44,7 +44,7 @@ vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
     }
     // Ambient occlusion: 1 = open, 0 = fully occluded.
     vec3 origin = positionMaterial.xyz + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
-    return vec3(1.0f - traceDiffuseCones(origin, normal).a);
+    return vec3(1.0f - traceDiffuseCones(origin, normal, frame.coneStartOffset).a);
 }
 
 #endif

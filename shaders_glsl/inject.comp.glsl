@@ -2,9 +2,9 @@
 // Light injection: the outgoing radiance of every occupied voxel, from the direct light it
 // receives (with shadow-map visibility) reflected diffusely, plus its emission. Written to
 // level 0 of the radiance volume as radiance × scale premultiplied by opacity.
-// With gatherBounce = 1 (the second bounce), each voxel also reflects the light its diffuse
-// cones gather from the first bounce's volume; it then writes to a separate image, since the
-// cones read the volume it would otherwise overwrite.
+// With gatherBounce = 1 (one more bounce), each voxel also reflects the light its diffuse cones
+// gather from the current volume; it then writes to a separate image, since the cones read the
+// volume it would otherwise overwrite.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
@@ -59,7 +59,7 @@ void main() {
     if (gatherBounce != 0u && normalLength > 0.25f) {
         // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). Cones start two voxels out, past the voxel itself.
         vec3 normal = normalSum / normalLength;
-        outgoing += albedoOpacity.rgb * traceDiffuseCones(center + normal * (2.0f * voxelSize), normal).rgb;
+        outgoing += albedoOpacity.rgb * traceDiffuseCones(center + normal * (2.0f * voxelSize), normal, 2.0f).rgb;
     }
     float opacity = albedoOpacity.a;
     imageStore(radiance, voxel, vec4(outgoing * frame.radianceScale * opacity, opacity));

@@ -41,7 +41,7 @@ vec3 indirectLight(SurfacePoint surface, uint flags) {
 
     vec3 radiance = vec3(0.0f);
     if (wantDiffuse || wantAmbient) {
-        vec4 gathered = traceDiffuseCones(origin, surface.normal);
+        vec4 gathered = traceDiffuseCones(origin, surface.normal, frame.coneStartOffset);
         if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
         if (wantAmbient) radiance += frame.ambientFactor * diffuseAlbedo * (1.0f - gathered.a);
     }
@@ -49,7 +49,8 @@ vec3 indirectLight(SurfacePoint surface, uint flags) {
     if (wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
         vec3 reflected = reflect(-surface.toViewer, surface.normal);
         float tanHalf = specularConeTanHalfAperture(ggxAlpha(surface.roughness));
-        radiance += specularAlbedo * traceCone(origin, reflected, tanHalf).radiance;
+        radiance += specularAlbedo * traceCone(origin, reflected, tanHalf, frame.coneStartOffset,
+                                                   dot(reflected, surface.normal)).radiance;
     }
     return radiance;
 }

@@ -4,7 +4,8 @@
 //   normal: xyz the mean of the touching triangles' unit normals, deliberately not renormalized (its
 //           length says how much they agree: the two faces of a thin wall cancel to ~0); w the
 //           triangle count, clamped to the largest half float.
-//   emission: mean emitted radiance (scene units), clamped to the largest half float; a = opacity.
+//   emission: mean emitted radiance of the emitting triangles (scene units), clamped to the largest
+//             half float; a = opacity.
 #extension GL_GOOGLE_include_directive : require
 #include "voxelize.h"
 
@@ -40,7 +41,9 @@ void main() {
     float n = float(count);
     vec3 albedo = channelMean(ACCUM_ALBEDO, index, n * ALBEDO_FIXED_SCALE, false);
     vec3 normal = channelMean(ACCUM_NORMAL, index, n * NORMAL_FIXED_SCALE, true);
-    vec3 radiance = channelMean(ACCUM_EMISSION, index, n, false) * params.emission.y;
+    uint emitters = accumulation[ACCUM_EMITTERS].values[index];
+    vec3 radiance = emitters == 0u ? vec3(0.0f)
+                                   : channelMean(ACCUM_EMISSION, index, float(emitters), false) * params.emission.y;
     imageStore(albedoOpacity, texel, vec4(albedo, 1.0f));
     imageStore(normalCount, texel, vec4(normal, min(n, HALF_FLOAT_MAX)));
     imageStore(emission, texel, vec4(min(radiance, vec3(HALF_FLOAT_MAX)), 1.0f));

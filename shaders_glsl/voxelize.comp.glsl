@@ -55,6 +55,10 @@ void main() {
     for (uint i = 0u; i < 3u; ++i) {
         atomicAdd(accumulation[ACCUM_ALBEDO + i].values[index], toFixed(albedo[i], ALBEDO_FIXED_SCALE));
         atomicAdd(accumulation[ACCUM_NORMAL + i].values[index], toFixed(normal[i], NORMAL_FIXED_SCALE));
-        atomicAdd(accumulation[ACCUM_EMISSION + i].values[index], toFixed(emission[i], 1.0f));
+    }
+    if (max(material.emission.r, max(material.emission.g, material.emission.b)) > 0.0f) {
+        atomicAdd(accumulation[ACCUM_EMITTERS].values[index], 1u);
+        for (uint i = 0u; i < 3u; ++i)
+            atomicAdd(accumulation[ACCUM_EMISSION + i].values[index], toFixed(emission[i], 1.0f));
     }
 }

@@ -8,6 +8,10 @@
 // workgroup per work item and one invocation per voxel of the tile, so the work is spread evenly
 // whatever the triangle sizes.
 //
+// Emission is averaged over the emitting triangles only: a lamp just under a ceiling shares its
+// voxels with the ceiling, and averaging over both would halve its light in the voxels. Opacity and
+// albedo come from every triangle.
+//
 // Order-independent averaging. Each touching triangle adds its attributes to integer sums with
 // atomicAdd; integer addition is associative, so the sums (and the images) do not depend on the
 // order the GPU happens to run the work items in. Float atomics would round differently per order.
@@ -33,8 +37,9 @@ const uint VOXELIZE_TILE = 4u;  // a work item covers VOXELIZE_TILE³ voxels
 const uint ACCUM_COUNT = 0u;     // triangles touching the voxel
 const uint ACCUM_ALBEDO = 1u;    // 3 channels, rgb × ALBEDO_FIXED_SCALE
 const uint ACCUM_NORMAL = 4u;    // 3 channels, xyz × NORMAL_FIXED_SCALE (two's complement)
-const uint ACCUM_EMISSION = 7u;  // 3 channels, rgb × VoxelizeParams.emission.x
-const uint ACCUM_CHANNELS = 10u;
+const uint ACCUM_EMISSION = 7u;  // 3 channels, rgb × VoxelizeParams.emission.x, emitting triangles only
+const uint ACCUM_EMITTERS = 10u;  // emitting triangles touching the voxel
+const uint ACCUM_CHANNELS = 11u;
 
 const float ALBEDO_FIXED_SCALE = 32768.0f;
 const float NORMAL_FIXED_SCALE = 16384.0f;

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Regenerates the path-traced references `vct bench` measures against:
 #   assets/reference/SCENE-direct.pfm, SCENE-indirect.pfm (128×128 linear radiance) and their
-#   .json sidecars (spp, seconds, mean luminance, per-pixel relative noise).
-# Full light is their sum; `vct bench` adds them when it loads them.
+#   .json sidecars (spp, seconds, mean luminance, per-pixel relative noise), and
+#   SCENE-indirect-1bounce.pfm: the indirect light of paths cut after one bounce (--max-depth 2),
+#   so the renderer's first bounce can be checked against its own truth.
+# Full light is direct + indirect; `vct bench` adds them when it loads them.
 #
 #   tools/make_references.sh [SCENE...]        (default: every built-in scene)
 #   BUILD=build-bench THREADS=1 tools/make_references.sh cornell
@@ -31,6 +33,7 @@ fi
 spp_for() {
     case "$1:$2" in
         terrain:indirect) echo 512 ;;
+        *:indirect-1bounce) echo 2048 ;;
         cornell-emissive:indirect) echo 1024 ;;  # paths find the lamp by NEE and MIS: less noise
         *:indirect) echo 2048 ;;
         cornell-emissive:direct) echo 128 ;;  # only the lamp seen by the camera: no light sampling
@@ -46,4 +49,6 @@ for scene in "${scenes[@]}"; do
         "$pathtrace" --scene "$scene" --mode "$mode" --width $size --height $size --spp "$(spp_for "$scene" "$mode")" \
             --threads "$threads" --seed 1 --out "$out/$scene-$mode.pfm"
     done
+    "$pathtrace" --scene "$scene" --mode indirect --max-depth 2 --width $size --height $size \
+        --spp "$(spp_for "$scene" indirect-1bounce)" --threads "$threads" --seed 1 --out "$out/$scene-indirect-1bounce.pfm"
 done

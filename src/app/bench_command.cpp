@@ -94,8 +94,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
                 imageSettings.image.width, imageSettings.image.height, info.device.c_str());
 
     options.onMeasured = [](const bench::Measurement& m) {
-        std::printf("  %-16s %-30s %8.1f ms static %8.1f ms light", m.scene.c_str(), m.setting.label.c_str(),
-                    m.staticFrame.gpuMilliseconds, m.lightChangeFrame.gpuMilliseconds);
+        std::printf("  %-16s %-34s %8.1f ms static %8.1f ms light (%u bounces, %.0f ms each)", m.scene.c_str(),
+                    m.setting.label.c_str(), m.staticFrame.gpuMilliseconds, m.lightChangeFrame.gpuMilliseconds,
+                    m.bounces, m.bounceMilliseconds);
         if (m.errors)
             std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse, m.errors->direct.relMse,
                         m.errors->indirect.relMse);
@@ -112,7 +113,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
             referenceDir, sceneFileName(name), imageSettings.image.width, imageSettings.image.height);
         if (references) info.references[scene.name] = *references;
         if (references && name == "cornell") cornellReferences = references;
-        else
+        if (!references)
             std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
                         imageSettings.image.width, imageSettings.image.height, referenceDir.c_str());
         for (bench::Measurement& m :

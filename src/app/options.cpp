@@ -84,9 +84,11 @@ std::vector<Option> makeSharedOptions() {
              s.resources.anisotropicVoxels = v.text() == "anisotropic";
          },
          [](const S& s) { return std::string(s.resources.anisotropicVoxels ? "anisotropic" : "isotropic"); }},
-        {"bounces", "1|2", "2 re-injects the light gathered by the voxels",
-         [](const V& v, S& s) { s.resources.bounces = v.whole(1, 2); },
-         [](const S& s) { return std::to_string(s.resources.bounces); }},
+        {"bounces", "N|converged", "bounces of indirect light; converged iterates until it changes < 1 %",
+         [](const V& v, S& s) {
+             s.resources.bounces = v.text() == "converged" ? kConvergedBounces : v.whole(1, kMaxBouncesPerFrame);
+         },
+         [](const S& s) { return bouncesText(s.resources.bounces); }},
         {"cones", "N", "diffuse cones", [](const V& v, S& s) { s.shading.diffuseConeCount = v.whole(1, 32); },
          [](const S& s) { return std::to_string(s.shading.diffuseConeCount); }},
         {"cone-aperture", "DEGREES", "full angle of each diffuse cone",

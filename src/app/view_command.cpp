@@ -74,6 +74,8 @@ int runView(const std::vector<std::string>& rawArguments) {
     if (!arguments.has("height")) options.settings.image.height = defaults.image.height;
     if (!arguments.has("supersample")) options.settings.image.supersample = defaults.image.supersample;
     if (!arguments.has("shadow-map")) options.settings.resources.sunShadowMapSize = defaults.resources.sunShadowMapSize;
+    // One bounce per frame: a moving light never waits for, or resets, the converged light.
+    options.settings.shading.progressiveBounces = true;
     options.exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
     options.vsync = !arguments.has("no-vsync");
     options.showGuide = !arguments.has("no-guide");

@@ -85,6 +85,42 @@ Scene makeTwoRoomScene(float wallX) {
     return scene;
 }
 
+Scene makeLonePlaneScene() {
+    Scene scene;
+    scene.name = "lone plane";
+    Material white;
+    white.name = "white";
+    white.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    white.metallic = 0.0f;
+    white.roughness = 1.0f;
+    white.specularWeight = 0.0f;
+    scene.materials.push_back(white);
+    addQuad(scene, {{{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}}, {0, 1, 0}, 0);
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 3.0f;
+    sun.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.3f));
+    scene.lights.push_back(sun);
+    Camera above = roomCamera({0.0f, 1.2f, 0.0f}, {0.0f, -1.0f, 0.0f});  // the plane fills its view
+    above.up = glm::vec3(0.0f, 0.0f, -1.0f);
+    scene.cameras.push_back(above);
+    return scene;
+}
+
+SelfIllumination measureSelfIllumination(GpuContext& context, RenderSettings settings) {
+    Renderer renderer(context, makeLonePlaneScene(), settings);
+    SelfIllumination result;
+    for (RenderMode mode : {RenderMode::Direct, RenderMode::Indirect}) {
+        settings.shading.mode = mode;
+        renderer.setShading(settings.shading);
+        renderer.renderFrame();
+        (mode == RenderMode::Direct ? result.directLuminance : result.indirectLuminance) =
+            meanLuminance(renderer.readImage());
+    }
+    return result;
+}
+
 Camera litRoomCamera() { return roomCamera({-0.97f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.0f}); }
 Camera darkRoomCamera() { return roomCamera({0.97f, 0.5f, 0.5f}, {-1.0f, 0.0f, 0.0f}); }
 

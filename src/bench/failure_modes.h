@@ -39,6 +39,17 @@ struct LeakMeasurement {
 };
 LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX);
 
+// ---- Self-illumination: a lone 2 m square lit by a sun 45° up, and nothing else. No light can
+// reach it twice, so its true indirect light is 0: whatever indirect light it gets, it gathered from
+// its own voxels.
+Scene makeLonePlaneScene();
+struct SelfIllumination {
+    double directLuminance = 0.0;    // mean over the image, which the plane fills
+    double indirectLuminance = 0.0;  // the same, ground truth 0
+    double ratio() const { return directLuminance > 0.0 ? indirectLuminance / directLuminance : 0.0; }
+};
+SelfIllumination measureSelfIllumination(GpuContext& context, RenderSettings settings);
+
 // ---- Brightness against voxel resolution: the mean luminance of `settings.shading.mode` (e.g. indirect)
 // for each resolution, all else equal.
 struct ResolutionLuminance {

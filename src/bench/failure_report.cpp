@@ -48,6 +48,7 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     report.drift = measureResolutionDrift(context, cornell, indirect, {32, 64, 128, 256});
     if (cornellIndirectReference) report.driftReference = meanLuminance(*cornellIndirectReference);
 
+    report.selfIllumination = measureSelfIllumination(context, settings);
     report.flickerFull = measureFlicker(context, cornell, settings, 0.001f, 0.001f);
     report.flickerIndirect = measureFlicker(context, cornell, indirect, 0.001f, 0.001f);
     return report;
@@ -65,6 +66,8 @@ std::string failureModesText(const FailureModeReport& report) {
         text += r.finite ? "\n" : "  NON-FINITE PIXELS\n";
     }
     text += format("  spread over resolutions (max − min) / mean: %.3f\n", spread(report.drift));
+    text += format("  self-illumination, lone sunlit plane: indirect %.4f of its direct light (truth 0)\n",
+                   report.selfIllumination.ratio());
     text += format(
         "  flicker, 1 mm steps (relative L1 change): full camera %.4f light %.4f, indirect camera %.4f "
         "light %.4f\n",
@@ -93,10 +96,15 @@ std::string failureModesJson(const FailureModeReport& report) {
                 ", \"luminance\": " + jsonNumber(r.meanLuminance) + ", \"finite\": " + (r.finite ? "true" : "false") +
                 "}";
     }
-    json += "\n    ]\n  },\n  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": " +
-            jsonNumber(report.flickerFull.cameraChange) + ", \"light\": " + jsonNumber(report.flickerFull.lightChange) +
-            "}, \"indirect\": {\"camera\": " + jsonNumber(report.flickerIndirect.cameraChange) +
-            ", \"light\": " + jsonNumber(report.flickerIndirect.lightChange) + "}}\n}\n";
+    json +=
+        "\n    ]\n  },\n  \"self_illumination\": {\"direct\": " + jsonNumber(report.selfIllumination.directLuminance) +
+        ", \"indirect\": " + jsonNumber(report.selfIllumination.indirectLuminance) +
+        ", \"ratio\": " + jsonNumber(report.selfIllumination.ratio()) + "},";
+    json +=
+        "\n  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": " + jsonNumber(report.flickerFull.cameraChange) +
+        ", \"light\": " + jsonNumber(report.flickerFull.lightChange) +
+        "}, \"indirect\": {\"camera\": " + jsonNumber(report.flickerIndirect.cameraChange) +
+        ", \"light\": " + jsonNumber(report.flickerIndirect.lightChange) + "}}\n}\n";
     return json;
 }
 

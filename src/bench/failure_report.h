@@ -1,5 +1,5 @@
 // The failure-modes section of `vct bench`: light leaking through a thin wall, brightness against
-// voxel resolution and flicker (src/bench/failure_modes.h), measured with one setting and reported
+// voxel resolution, self-illumination and flicker (src/bench/failure_modes.h), measured with one setting and reported
 // as text and JSON next to the accuracy matrix. The tests hold the same measurements to bounds
 // (tests/gpu/failure_modes_test.cpp); the benchmark reports them at the bench's image size.
 #pragma once
@@ -22,6 +22,7 @@ struct FailureModeReport {
     std::vector<ResolutionLuminance> drift;           // Cornell box, indirect light
     double driftReference = -1.0;                     // the path tracer's indirect mean luminance; −1 = none
     FlickerMeasurement flickerFull, flickerIndirect;  // 1 mm camera and light steps, Cornell box
+    SelfIllumination selfIllumination;                // a lone sunlit plane, ground truth 0
 };
 
 // `settings` gives the image size and the cone setup; the drift runs it at 32³…256³. With the

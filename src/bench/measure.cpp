@@ -127,6 +127,13 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
             frames.push_back(renderer->renderFrame());
         }
         m.lightChangeFrame = medianTiming(frames);
+        m.bounces = frames.back().bounces;
+        m.bouncesConverged = frames.back().bouncesConverged;
+        double lightMilliseconds = 0.0;
+        for (const PassTime& pass : m.lightChangeFrame.passes)
+            if (pass.name == "inject" || pass.name == "mips" || pass.name == "bounce")
+                lightMilliseconds += pass.milliseconds;
+        m.bounceMilliseconds = m.bounces > 0 ? lightMilliseconds / m.bounces : 0.0;
 
         frames.clear();
         for (uint32_t i = 0; i < options.frames; ++i) frames.push_back(renderer->renderFrame());

@@ -5,8 +5,8 @@
 // the others are applied with setShadingSettings. A new Renderer's first frame (every pass runs,
 // voxelization included) and `warmupFrames` more are not measured. Then, for each setting:
 //   1. `frames` frames after a light "change" (setLights with the same lights): shadow maps,
-//      injection, mips and shading run → median times. The first also re-lights the voxels with
-//      this setting's cone parameters (a second bounce gathers with them);
+//      injection, mips, the bounces to convergence and shading run → median times, and how many
+//      bounces that took. The first also re-lights the voxels with this setting's cones;
 //   2. `frames` static frames (nothing changed: the voxel passes are skipped) → median times, and
 //      the full image;
 //   3. one frame in `direct` and one in `indirect` mode → their images.
@@ -56,6 +56,9 @@ struct Measurement {
     FrameTiming staticFrame;       // nothing changed
     FrameTiming lightChangeFrame;  // a light changed: shadow maps, injection, mips and shading
     double voxelizeMilliseconds = 0.0;
+    uint32_t bounces = 0;             // bounces a light change ran (from the light sources' light on)
+    bool bouncesConverged = true;     // they reached kBounceTolerance
+    double bounceMilliseconds = 0.0;  // GPU time per bounce: (inject + mips + bounce) / bounces
     uint64_t deviceMemoryBytes = 0;
     bool imagesFinite = true;  // no NaN or Inf in the full, direct or indirect image
     std::optional<ModeErrors> errors;

@@ -125,8 +125,8 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
         csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << ","
             << s.resources.voxelResolution << "," << s.shading.diffuseConeCount << ","
             << number(s.shading.diffuseConeAperture) << "," << number(s.shading.coneStep) << ","
-            << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << s.resources.bounces << ","
-            << s.image.supersample << "," << s.resources.sunShadowMapSize << ","
+            << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << bouncesText(s.resources.bounces)
+            << "," << s.image.supersample << "," << s.resources.sunShadowMapSize << ","
             << number(m.staticFrame.gpuMilliseconds) << "," << number(m.staticFrame.cpuMilliseconds) << ","
             << number(m.lightChangeFrame.gpuMilliseconds) << "," << number(m.lightChangeFrame.cpuMilliseconds) << ","
             << number(m.voxelizeMilliseconds) << ","
@@ -173,11 +173,13 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
              << ", \"aperture_deg\": " << jsonNumber(s.shading.diffuseConeAperture)
              << ", \"step\": " << jsonNumber(s.shading.coneStep)
              << ", \"anisotropic\": " << (s.resources.anisotropicVoxels ? "true" : "false")
-             << ", \"bounces\": " << s.resources.bounces << ", \"supersample\": " << s.image.supersample
-             << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
+             << ", \"bounces\": " << jsonString(bouncesText(s.resources.bounces))
+             << ", \"supersample\": " << s.image.supersample << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
              << "},\n     \"static\": " << jsonTiming(m.staticFrame)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
-             << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds)
+             << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds) << ", \"bounces\": " << m.bounces
+             << ", \"bounces_converged\": " << (m.bouncesConverged ? "true" : "false")
+             << ", \"ms_per_bounce\": " << jsonNumber(m.bounceMilliseconds)
              << ", \"device_memory_bytes\": " << m.deviceMemoryBytes
              << ", \"finite\": " << (m.imagesFinite ? "true" : "false") << ",\n     \"error\": ";
         if (m.errors)

@@ -30,24 +30,29 @@ std::vector<Pass> FramePlan::skipped() const {
 FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings) {
     const bool voxelsRead = needsVoxels(settings.shading);
     const bool voxelize = voxelsRead && stale.voxels;
-    const bool inject = voxelsRead && (stale.radiance || voxelize);
+    const uint32_t bounces = settings.resources.bounces;
+    const bool progressive = bounces == kConvergedBounces && settings.shading.progressiveBounces;
+    const bool inject = voxelsRead && (stale.radiance || voxelize || (progressive && stale.bounces));
     FramePlan plan;
     for (Pass pass : kPipelineOrder) {
         bool run = true;
         if (pass == Pass::Shadow) run = stale.shadows;
         if (pass == Pass::Voxelize) run = voxelize;
         if (pass == Pass::Inject || pass == Pass::Mips) run = inject;
-        if (pass == Pass::Bounce) run = inject && settings.resources.bounces >= 2;
+        if (pass == Pass::Bounce) run = inject && bounces != 1 && !progressive;
         if (run) plan.passes.push_back(pass);
     }
     return plan;
 }
 
-StaleInputs afterFrame(const StaleInputs& stale, const FramePlan& plan) {
+StaleInputs afterFrame(const StaleInputs& stale, const FramePlan& plan, bool converged) {
     StaleInputs after = stale;
     if (plan.runs(Pass::Shadow)) after.shadows = false;
     if (plan.runs(Pass::Voxelize)) after.voxels = false;
-    if (plan.runs(Pass::Inject)) after.radiance = false;
+    if (plan.runs(Pass::Inject)) {
+        after.radiance = false;
+        after.bounces = !converged;
+    }
     return after;
 }
 

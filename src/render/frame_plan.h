@@ -2,7 +2,9 @@
 // tested on the CPU (tests/cpu/frame_plan_test.cpp). Shadow maps are redrawn when a light moved;
 // the scene is voxelized once per geometry; light is re-injected (and the mips rebuilt) when a
 // light changed or the voxels were rebuilt; and no voxel pass runs while the image shows nothing
-// that reads the voxels.
+// that reads the voxels. With converged bounces the injection gathers the voxels' own cones from
+// the last light (so it is the first bounce of the series), and `bounce` repeats it until the light
+// converges, or, progressively, the next frames do.
 #pragma once
 
 #include <array>
@@ -26,6 +28,7 @@ struct StaleInputs {
     bool shadows = true;   // lights moved, geometry changed, or the shadow bias did
     bool voxels = true;    // geometry changed
     bool radiance = true;  // lights changed
+    bool bounces = false;  // the bounce series has not converged yet (progressive bounces)
     bool operator==(const StaleInputs&) const = default;
 };
 
@@ -37,7 +40,8 @@ struct FramePlan {
 };
 
 FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings);
-// What is still stale once `plan` has run: voxels and light stay stale while nothing reads them.
-StaleInputs afterFrame(const StaleInputs& stale, const FramePlan& plan);
+// What is still stale once `plan` has run: voxels and light stay stale while nothing reads them;
+// `converged` says whether the frame's bounces reached kBounceTolerance.
+StaleInputs afterFrame(const StaleInputs& stale, const FramePlan& plan, bool converged);
 
 }  // namespace vct

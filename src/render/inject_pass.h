@@ -12,12 +12,12 @@ namespace vct {
 struct InjectPass {
     explicit InjectPass(GpuContext& context);
 
-    // Writes level 0 of volumes.radiance from the scene voxels, visible to the mip pass after.
+    // Writes level 0 of volumes.radiance from the scene voxels (the light sources' light reflected
+    // once), visible to the mip pass after.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
                 const ShadowPass& shadows, VoxelVolumes& volumes);
-    // The second bounce: injects again, adding what each voxel's cones gather from the current
-    // (first-bounce, mipmapped) volume, and replaces level 0 with the result. The mips must be
-    // rebuilt afterwards.
+    // One more bounce: injects again, adding what each voxel's cones gather from the current
+    // (mipmapped) volume, and replaces level 0 with the result. The mips must be rebuilt after.
     void recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
                       const ShadowPass& shadows, VoxelVolumes& volumes);
 

@@ -15,8 +15,14 @@ static VkImageView mipView(const GpuImage& image, uint32_t level) {
     return image.mipViews.empty() ? image.view : image.mipViews[level];
 }
 
-void MipsPass::recordDirectional(VkCommandBuffer commands, const GpuImage& volume,
-                                 const std::vector<GpuImage>& directional) {
+void MipsPass::record(VkCommandBuffer commands, const VoxelVolumes& volumes) {
+    recordIsotropic(commands, volumes.radiance);
+    recordDirectional(commands, volumes);
+}
+
+void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes) {
+    const GpuImage& volume = volumes.radiance;
+    const std::vector<GpuImage>& directional = volumes.directional;
     if (directional.empty()) return;
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, directionalPipeline.pipeline);
     const uint32_t levels = directional[0].desc.mipLevels;
@@ -27,9 +33,10 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const GpuImage& volum
             DescriptorPush()
                 .storageImage(0, source)
                 .storageImage(1, mipView(directional[direction], level))
+                .storageImage(2, volumes.normal.view)
                 .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, directionalPipeline.layout);
-            vkCmdPushConstants(commands, directionalPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(direction),
-                               &direction);
+            const uint32_t push[2] = {direction, level == 0 ? 1u : 0u};  // level 0 reads the scene voxels
+            vkCmdPushConstants(commands, directionalPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), push);
             const uint32_t size = std::max(directional[direction].desc.extent.width >> level, 1u);
             const uint32_t groups = (size + 3) / 4;
             vkCmdDispatch(commands, groups, groups, groups);
@@ -40,7 +47,7 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const GpuImage& volum
     }
 }
 
-void MipsPass::record(VkCommandBuffer commands, const GpuImage& volume) {
+void MipsPass::recordIsotropic(VkCommandBuffer commands, const GpuImage& volume) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     for (uint32_t level = 1; level < volume.desc.mipLevels; ++level) {
         DescriptorPush()

@@ -3,6 +3,7 @@
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
+#include "render/voxel_volumes.h"
 
 #include <vector>
 
@@ -11,16 +12,17 @@ namespace vct {
 struct MipsPass {
     explicit MipsPass(GpuContext& context);
 
-    // Reads level 0 of `volume` (GENERAL) and writes every coarser level; leaves the volume in
-    // GENERAL, visible to sampling in the fragment and compute stages.
-    void record(VkCommandBuffer commands, const GpuImage& volume);
-    // Builds the six directional chains from level 0 of `volume` (anisotropic voxels).
-    void recordDirectional(VkCommandBuffer commands, const GpuImage& volume, const std::vector<GpuImage>& directional);
+    // Reads level 0 of the radiance volume and writes every coarser level, and the six directional
+    // chains of anisotropic voxels (their first level one-sided, from the scene voxels' normals);
+    // visible to sampling in the fragment and compute stages after.
+    void record(VkCommandBuffer commands, const VoxelVolumes& volumes);
 
     Pipeline pipeline;
     Pipeline directionalPipeline;
 
 private:
+    void recordIsotropic(VkCommandBuffer commands, const GpuImage& volume);
+    void recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes);
     GpuContext& context_;
 };
 

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <functional>
 
+#include <glm/gtc/packing.hpp>
+
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
@@ -54,6 +56,7 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
+      meanRadiance_(context, 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
       volumes_(std::make_unique<VoxelVolumes>(context, settings.resources)),
       injectPass_(context),
       mipsPass_(context),
@@ -158,7 +161,9 @@ void Renderer::writeFrameConstants() {
     constants.coneTanHalfAperture = std::tan(glm::radians(0.5f * shading.diffuseConeAperture));
     constants.coneStep = shading.coneStep;
     constants.coneMaxDistance = shading.coneMaxDistance * resolution;
-    constants.coneStartOffset = shading.coneStartOffset;
+    // In world units (voxels of a 64³ grid over the same scene), so that a finer grid does not
+    // start its cones nearer the surface and see light a coarser one skips.
+    constants.coneStartOffset = shading.coneStartOffset * resolution / float(kConeStartGrid);
     constants.aoFalloff = shading.aoFalloff / resolution;
     constants.coneStopOpacity = shading.coneStopOpacity;
     constants.diffuseCentreWeight = shading.diffuseCentreWeight;
@@ -174,45 +179,113 @@ FrameStats Renderer::renderFrame() {
     writeFrameConstants();
     stats.plan = planFrame(stale_, settings_);
     const FramePlan& plan = stats.plan;
-    submitAndWait(context_, [&](VkCommandBuffer commands) {
-        timer_.reset(commands);
-        // Each planned pass, in pipeline order, between its timestamps.
-        auto run = [&](Pass pass, const std::function<void()>& record) {
-            if (!plan.runs(pass)) return;
-            timer_.begin(commands, passName(pass));
-            record();
-            timer_.end(commands);
-        };
-        run(Pass::Shadow,
+    const bool converging = settings_.resources.bounces == kConvergedBounces;
+    const bool progressive = converging && settings_.shading.progressiveBounces;
+    // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
+    auto submit = [&](const std::function<void(VkCommandBuffer)>& record) {
+        submitAndWait(context_, [&](VkCommandBuffer commands) {
+            timer_.reset(commands);
+            record(commands);
+        });
+        for (const PassTime& time : timer_.results()) {
+            auto same = std::find_if(stats.passes.begin(), stats.passes.end(),
+                                     [&](const PassTime& pass) { return pass.name == time.name; });
+            if (same == stats.passes.end()) stats.passes.push_back(time);
+            else same->milliseconds += time.milliseconds;
+        }
+    };
+    auto run = [&](VkCommandBuffer commands, Pass pass, const std::function<void()>& record) {
+        if (!plan.runs(pass)) return;
+        timer_.begin(commands, passName(pass));
+        record();
+        timer_.end(commands);
+    };
+    auto bounce = [&](VkCommandBuffer commands) {
+        injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
+                                 *shadowPass_, *volumes_);
+        mipsPass_.record(commands, *volumes_);
+        recordMeanRadiance(commands);
+    };
+
+    submit([&](VkCommandBuffer commands) {
+        run(commands, Pass::Shadow,
             [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_); });
-        run(Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
-        run(Pass::Inject, [&] {
-            injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                               *shadowPass_, *volumes_);
+        run(commands, Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
+        // Progressively converging (the viewer), the injection is itself a bounce: the light
+        // sources' light plus what the cones gather from the last frame's light, so a moved light
+        // starts from the old solution instead of dropping to one bounce. Otherwise every frame
+        // that re-lights starts from the light sources alone: the same inputs, the same image.
+        run(commands, Pass::Inject, [&] {
+            if (progressive) {
+                injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
+                                         shadowViewsBuffer_.buffer, *shadowPass_, *volumes_);
+            } else {
+                injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
+                                   *shadowPass_, *volumes_);
+            }
         });
-        run(Pass::Mips, [&] { recordMips(commands); });
-        run(Pass::Bounce, [&] {
-            injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                                     *shadowPass_, *volumes_);
-            recordMips(commands);
+        run(commands, Pass::Mips, [&] {
+            mipsPass_.record(commands, *volumes_);
+            recordMeanRadiance(commands);
         });
-        run(Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
-        run(Pass::Shade, [&] {
+    });
+    bool converged = true;
+    if (plan.runs(Pass::Inject)) {
+        stats.bounces = 1;
+        const bool settled = meanRadianceSettled();  // also remembers this mean for the next bounce
+        if (converging) converged = progressive && settled;
+    }
+    if (plan.runs(Pass::Bounce)) {
+        const uint32_t more = converging ? kMaxBouncesPerFrame - 1 : settings_.resources.bounces - 1;
+        for (uint32_t i = 0; i < more && !(converging && converged); ++i) {
+            submit([&](VkCommandBuffer commands) { run(commands, Pass::Bounce, [&] { bounce(commands); }); });
+            ++stats.bounces;
+            if (converging) converged = meanRadianceSettled();
+        }
+    }
+    submit([&](VkCommandBuffer commands) {
+        run(commands, Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
+        run(commands, Pass::Shade, [&] {
             const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
                                      shadowViewsBuffer_.buffer};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
-        run(Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });
+        run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });
     });
-    stale_ = afterFrame(stale_, plan);
-    stats.passes = timer_.results();
+    stats.bouncesConverged = converged;
+    stale_ = afterFrame(stale_, plan, converged);
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }
 
-void Renderer::recordMips(VkCommandBuffer commands) {
-    mipsPass_.record(commands, volumes_->radiance);
-    mipsPass_.recordDirectional(commands, volumes_->radiance, volumes_->directional);
+void Renderer::recordMeanRadiance(VkCommandBuffer commands) {
+    // The radiance volume's coarsest level is one texel: the mean over the grid.
+    const GpuImage& radiance = volumes_->radiance;
+    const uint32_t top = radiance.desc.mipLevels - 1;
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, top,
+                 1);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, top, 0, 1};
+    region.imageExtent = {1, 1, 1};
+    vkCmdCopyImageToBuffer(commands, radiance.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, meanRadiance_.buffer, 1,
+                           &region);
+    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, top, 1);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+}
+
+bool Renderer::meanRadianceSettled() {
+    const uint16_t* half = static_cast<const uint16_t*>(meanRadiance_.mapped);
+    const float luminance = 0.2126f * glm::unpackHalf1x16(half[0]) + 0.7152f * glm::unpackHalf1x16(half[1]) +
+                            0.0722f * glm::unpackHalf1x16(half[2]);
+    const float change = std::abs(luminance - lastMeanRadiance_);
+    lastMeanRadiance_ = luminance;
+    return change <= kBounceTolerance * luminance;
 }
 
 Image Renderer::readImage() {

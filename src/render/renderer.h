@@ -33,6 +33,8 @@ struct FrameStats {
     FramePlan plan;                // the passes this frame ran (none: the viewer reused its image)
     std::vector<PassTime> passes;  // their GPU times, where the device has timestamp queries
     double cpuMilliseconds = 0.0;  // recording + submission + wait, on the CPU clock
+    uint32_t bounces = 0;          // bounce iterations this frame ran (the injection is the first)
+    bool bouncesConverged = true;  // the voxels' light changed by less than kBounceTolerance
 
     double gpuMilliseconds() const;
     bool ran(const std::string& pass) const;
@@ -60,6 +62,9 @@ public:
 
     // Records, submits and waits for one frame.
     FrameStats renderFrame();
+    // Progressive bounces have not converged yet: the next frame changes the image even if
+    // nothing else does.
+    bool settling() const { return stale_.bounces; }
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
 
@@ -76,7 +81,10 @@ public:
 
 private:
     void writeFrameConstants();
-    void recordMips(VkCommandBuffer commands);
+    // Copies the radiance volume's mean (its 1×1×1 level) to meanRadiance_, and tells, once the
+    // commands ran, whether it moved by less than kBounceTolerance since the last time.
+    void recordMeanRadiance(VkCommandBuffer commands);
+    bool meanRadianceSettled();
 
     GpuContext& context_;
     RenderSettings settings_;
@@ -92,6 +100,8 @@ private:
     std::unique_ptr<SceneGpu> sceneGpu_;
     ShadowLayout shadowLayout_;
     Buffer frameConstants_;
+    Buffer meanRadiance_;  // host-visible RGBA16F texel
+    float lastMeanRadiance_ = 0.0f;
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;
     std::unique_ptr<ShadowPass> shadowPass_;

@@ -18,6 +18,10 @@ const char* renderModeName(RenderMode mode) {
     return "?";
 }
 
+std::string bouncesText(uint32_t bounces) {
+    return bounces == kConvergedBounces ? "converged" : std::to_string(bounces);
+}
+
 const char* debugViewLabel(DebugView view) {
     static const char* const labels[debugViewCount] = {
         "lit image",         "base colour",  "normal",       "depth",

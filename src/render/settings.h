@@ -59,6 +59,19 @@ struct ComponentInfo {
 const std::array<ComponentInfo, 7>& componentTable();
 uint32_t componentFlags(const Components& components);
 
+// ResourceSettings::bounces for "every bounce": each voxel's light includes what its own cones
+// gather, iterated until the volume's mean changes by less than kBounceTolerance.
+inline constexpr uint32_t kConvergedBounces = 0;
+inline constexpr float kBounceTolerance = 0.01f;
+// Iterations one frame runs at most while converging (vct render and vct bench).
+inline constexpr uint32_t kMaxBouncesPerFrame = 32;
+// "converged" or the count, as --bounces takes it.
+std::string bouncesText(uint32_t bounces);
+
+// The grid whose voxels ShadingSettings::coneStartOffset counts: the offset is a world distance,
+// the same at every voxel resolution.
+inline constexpr uint32_t kConeStartGrid = 64;
+
 struct ImageSettings {
     uint32_t width = 512;
     uint32_t height = 512;
@@ -73,7 +86,9 @@ struct ResourceSettings {
     // recover 22 % of the path-traced indirect light and anisotropic ones 75 %: thin walls stay
     // opaque for the wide diffuse cones.
     bool anisotropicVoxels = true;
-    uint32_t bounces = 1;                // 2 = re-inject the light the voxels gather by cones
+    // Bounces of indirect light the voxels carry: 1 = the light sources' light reflected once,
+    // N = N reflections, kConvergedBounces = every bounce, iterated until the light converges.
+    uint32_t bounces = kConvergedBounces;
     uint32_t sunShadowMapSize = 4096;    // directional lights
     uint32_t localShadowMapSize = 1024;  // each spot light and each cube face of a point light
     bool operator==(const ResourceSettings&) const = default;
@@ -95,10 +110,15 @@ struct ShadingSettings {
     float diffuseCentreWeight = 0.25f;  // the ring shares the rest equally (0.15 each for 6 cones)
     float coneStep = 0.5f;              // step along a cone, as a fraction of its diameter there
     float coneMaxDistance = 1.0f;       // longest cone, as a fraction of the grid's side
-    float coneStartOffset = 1.5f;       // voxels between the surface and a cone's apex
+    float coneStartOffset = 1.5f;       // gap between the surface and a cone's apex, in voxels of a 64³ grid
     float coneStopOpacity = 0.95f;      // a cone stops once this opaque
     float aoFalloff = 8.0f;             // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
     bool skipEmptySpace = true;         // march through empty space with the coarse mips
+
+    // With converged bounces, one bounce per frame, each fed by the last frame's light, so that a
+    // moving light never resets (and pumps) the indirect light: the viewer's choice. Otherwise
+    // every frame that re-lights the voxels iterates to convergence.
+    bool progressiveBounces = false;
 
     DebugView debugView = DebugView::None;
     uint32_t debugVoxelMip = 0;  // the mip level the voxel views show

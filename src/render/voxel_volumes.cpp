@@ -9,9 +9,10 @@ namespace vct {
 
 std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources) {
     const uint32_t side = resources.voxelResolution, mips = voxelMipCount(side);
-    const VkImageUsageFlags scene =
-        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    const VkImageUsageFlags light = scene | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // Every volume can be copied and cleared (tests fill them; the bounce copies level 0).
+    const VkImageUsageFlags scene = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    const VkImageUsageFlags light = scene;
     const VkFormat half = VK_FORMAT_R16G16B16A16_SFLOAT;
     std::vector<VoxelVolumeDesc> descs = {
         {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, scene, true},
@@ -23,9 +24,10 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
         for (const char* name : {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y", "voxel radiance -y",
                                  "voxel radiance +z", "voxel radiance -z"})
             descs.push_back({name, half, 8, side / 2, mips - 1, light, false});
-    if (resources.bounces >= 2)
-        descs.push_back({"voxel radiance, second bounce", half, 8, side, 1,
-                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false});
+    if (resources.bounces != 1)
+        descs.push_back({"voxel radiance, next bounce", half, 8, side, 1,
+                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                         false});
     return descs;
 }
 
@@ -59,15 +61,23 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     for (GpuImage* image : {&albedoOpacity, &normal, &emission, &radiance}) *image = makeVolume(context, descs[next++]);
     if (resources.anisotropicVoxels)
         for (int direction = 0; direction < 6; ++direction) directional.push_back(makeVolume(context, descs[next++]));
-    if (resources.bounces >= 2) bounceTarget = makeVolume(context, descs[next++]);
+    if (resources.bounces != 1) bounceTarget = makeVolume(context, descs[next++]);
 
-    // GENERAL for good: storage writes and sampled reads alike use it, so no pass changes a layout.
+    // Zero (no light yet: the first bounce gathers nothing), then GENERAL for good: storage writes
+    // and sampled reads alike use it, so no pass changes a layout.
     submitAndWait(context, [&](VkCommandBuffer commands) {
-        for (const GpuImage* image : images())
+        const VkClearColorValue zero{};
+        const VkImageSubresourceRange everything{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
+        for (const GpuImage* image : images()) {
             imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                         VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            vkCmdClearColorImage(commands, image->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &everything);
+            imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                          VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+        }
     });
 }
 

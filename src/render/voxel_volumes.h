@@ -1,7 +1,8 @@
 // Every 3D image of the voxel data, owned in one place with its format: what the voxelizer writes
 // (albedo and opacity, normal, emission), the light injected into it (radiance with its mip
-// chain), the six directional chains of anisotropic voxels and the second bounce's target. Each is
-// moved to GENERAL once, at creation, and stays there: the passes only order their accesses.
+// chain), the six directional chains of anisotropic voxels and the next bounce's target. Each is
+// cleared and moved to GENERAL once, at creation, and stays there (a copy leaves it for the copy
+// only): the passes order their accesses.
 #pragma once
 
 #include <vector>
@@ -39,7 +40,7 @@ struct VoxelVolumes {
     // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
     // down (level 0 is shared); empty when the voxels are isotropic.
     std::vector<GpuImage> directional;
-    GpuImage bounceTarget;  // level 0 of the second bounce (bounces = 2 only)
+    GpuImage bounceTarget;  // level 0 of the next bounce, written while the cones read radiance (bounces ≠ 1)
     Sampler sampler;        // trilinear between mips, transparent black outside the grid
 
     // The six views of the directional array binding (the isotropic volume stands in when the

@@ -74,6 +74,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
     result.resolution = n;
     const size_t voxels = size_t(n) * n * n;
     result.count.assign(voxels, 0);
+    result.emitters.assign(voxels, 0);
     result.albedo.assign(voxels, glm::dvec3(0.0));
     result.normal.assign(voxels, glm::dvec3(0.0));
     result.emission.assign(voxels, glm::dvec3(0.0));
@@ -98,7 +99,10 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
                     ++result.count[i];
                     result.albedo[i] += albedo;
                     result.normal[i] += normal;
-                    result.emission[i] += emission;
+                    if (glm::max(emission.x, glm::max(emission.y, emission.z)) > 0.0) {
+                        ++result.emitters[i];
+                        result.emission[i] += emission;
+                    }
                 }
     }
     for (size_t i = 0; i < voxels; ++i)
@@ -106,7 +110,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
             const double count = double(result.count[i]);
             result.albedo[i] /= count;
             result.normal[i] /= count;
-            result.emission[i] /= count;
+            if (result.emitters[i] > 0) result.emission[i] /= double(result.emitters[i]);
         }
     return result;
 }

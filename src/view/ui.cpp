@@ -132,9 +132,10 @@ static void resolutionSection(ViewerState& state) {
     ImGui::SliderInt("supersample", &supersample, 1, 4);
     settings.image.supersample = uint32_t(supersample);
     ImGui::Checkbox("anisotropic voxels", &settings.resources.anisotropicVoxels);
-    bool secondBounce = settings.resources.bounces >= 2;
-    ImGui::Checkbox("second bounce", &secondBounce);
-    settings.resources.bounces = secondBounce ? 2 : 1;
+    // 0 = converged (one bounce per frame until the light settles), else that many bounces.
+    int bounces = int(settings.resources.bounces);
+    ImGui::SliderInt("bounces", &bounces, 0, 8, bounces == 0 ? "converged" : "%d");
+    settings.resources.bounces = uint32_t(std::clamp(bounces, 0, 8));
 }
 
 static void presetRow(ViewerState& state) {

@@ -569,7 +569,8 @@ bool Viewer::loopIteration() {
     drawErrorWindow(state_);
     ImGui::Render();
 
-    if (imageStale_ || options_.renderEveryFrame || !sameCamera(renderer_->camera(), lastRenderedCamera_)) {
+    if (imageStale_ || renderer_->settling() || options_.renderEveryFrame ||
+        !sameCamera(renderer_->camera(), lastRenderedCamera_)) {
         const FrameStats stats = renderer_->renderFrame();
         lastRenderedCamera_ = renderer_->camera();
         imageStale_ = false;

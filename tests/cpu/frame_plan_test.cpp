@@ -16,7 +16,7 @@ using Names = std::vector<std::string>;
 
 TEST(FramePlan, FirstFrameRunsEveryPassInPipelineOrder) {
     EXPECT_EQ(names(planFrame(StaleInputs{}, RenderSettings{})),
-              (Names{"shadow", "voxelize", "inject", "mips", "gbuffer", "shade", "resolve"}));
+              (Names{"shadow", "voxelize", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"}));
 }
 
 TEST(FramePlan, NothingChangedRunsOnlyTheImagePasses) {
@@ -27,7 +27,7 @@ TEST(FramePlan, NothingChangedRunsOnlyTheImagePasses) {
 TEST(FramePlan, AMovedLightRedrawsShadowsAndReinjectsWithoutRevoxelizing) {
     const StaleInputs light{.shadows = true, .voxels = false, .radiance = true};
     EXPECT_EQ(names(planFrame(light, RenderSettings{})),
-              (Names{"shadow", "inject", "mips", "gbuffer", "shade", "resolve"}));
+              (Names{"shadow", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"}));
 }
 
 TEST(FramePlan, NewVoxelsAreLitEvenWhenNoLightChanged) {
@@ -43,7 +43,7 @@ TEST(FramePlan, DirectLightRunsNoVoxelPassAndKeepsThemStale) {
     direct.shading.mode = RenderMode::Direct;
     const FramePlan plan = planFrame(StaleInputs{}, direct);
     EXPECT_EQ(names(plan), (Names{"shadow", "gbuffer", "shade", "resolve"}));
-    const StaleInputs after = afterFrame(StaleInputs{}, plan);
+    const StaleInputs after = afterFrame(StaleInputs{}, plan, true);
     EXPECT_FALSE(after.shadows);
     EXPECT_TRUE(after.voxels) << "switching indirect light on later must voxelize then";
     EXPECT_TRUE(after.radiance);
@@ -67,18 +67,37 @@ TEST(FramePlan, VoxelDebugViewsNeedTheVoxelsEvenInDirectMode) {
     EXPECT_FALSE(planFrame(StaleInputs{}, settings).runs(Pass::Voxelize));
 }
 
-TEST(FramePlan, ASecondBounceFollowsEachInjection) {
+TEST(FramePlan, BouncesFollowEachInjectionUnlessThereIsOnlyOne) {
     RenderSettings settings;
-    settings.resources.bounces = 2;
-    EXPECT_EQ(names(planFrame(StaleInputs{}, settings)),
-              (Names{"shadow", "voxelize", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"}));
+    settings.resources.bounces = 1;
+    EXPECT_FALSE(planFrame(StaleInputs{}, settings).runs(Pass::Bounce));
+    settings.resources.bounces = 3;
+    EXPECT_TRUE(planFrame(StaleInputs{}, settings).runs(Pass::Bounce));
+    settings.resources.bounces = kConvergedBounces;
+    EXPECT_TRUE(planFrame(StaleInputs{}, settings).runs(Pass::Bounce));
     const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
     EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::Bounce));
 }
 
+TEST(FramePlan, ProgressiveBouncesInjectOncePerFrameUntilTheLightConverges) {
+    RenderSettings settings;
+    settings.shading.progressiveBounces = true;
+    const FramePlan first = planFrame(StaleInputs{}, settings);
+    EXPECT_TRUE(first.runs(Pass::Inject));
+    EXPECT_FALSE(first.runs(Pass::Bounce)) << "one bounce per frame: the injection is it";
+    // Not converged yet: the next frame, though nothing changed, bounces again.
+    const StaleInputs settling = afterFrame(StaleInputs{}, first, false);
+    EXPECT_TRUE(settling.bounces);
+    EXPECT_EQ(names(planFrame(settling, settings)), (Names{"inject", "mips", "gbuffer", "shade", "resolve"}));
+    // Converged: still frames run no voxel pass.
+    const StaleInputs settled = afterFrame(settling, planFrame(settling, settings), true);
+    EXPECT_EQ(names(planFrame(settled, settings)), (Names{"gbuffer", "shade", "resolve"}));
+}
+
 TEST(FramePlan, AfterAFullFrameNothingIsStale) {
     const FramePlan plan = planFrame(StaleInputs{}, RenderSettings{});
-    EXPECT_EQ(afterFrame(StaleInputs{}, plan), (StaleInputs{.shadows = false, .voxels = false, .radiance = false}));
+    EXPECT_EQ(afterFrame(StaleInputs{}, plan, true),
+              (StaleInputs{.shadows = false, .voxels = false, .radiance = false, .bounces = false}));
 }
 
 TEST(FramePlan, SkippedPassesAreTheRestInPipelineOrder) {

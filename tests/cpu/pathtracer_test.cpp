@@ -182,6 +182,25 @@ TEST(PathTracer, WhiteFurnaceClosedBoxGivesEmissionOverOneMinusAlbedo) {
     }
 }
 
+TEST(PathTracer, MaxDepthKeepsThatManyBouncesOfTheFurnace) {
+    // The same furnace with paths cut after D light-gathering interactions: the camera sees the
+    // emission and D reflections of it, E·(1 + a + … + a^D). D = 1 is direct light only (here the
+    // walls' emission reflected once); the bench's one-bounce references use D = 2.
+    const float emission = 0.5f, albedo = 0.8f;
+    Scene scene;
+    const uint32_t wall = addMaterial(scene, lambertian(glm::vec3(albedo), glm::vec3(emission)));
+    addInwardBox(scene, 1.0f, {wall, wall, wall, wall, wall, wall});
+    scene.cameras.push_back(cameraLookingAt(glm::vec3(0.1f, 0.2f, 0.3f), glm::vec3(1.0f, 0.6f, -1.0f), 1.5f));
+    PathTracer tracer = createPathTracer(scene);
+    for (uint32_t depth : {0u, 1u, 2u, 4u}) {
+        tracer.maxDepth = depth;
+        const RenderResult result = render(tracer, smallRender(scene, 8, 256, Component::Full, 11));
+        double expected = 0.0;
+        for (uint32_t k = 0; k <= depth; ++k) expected += emission * std::pow(double(albedo), double(k));
+        EXPECT_NEAR(result.meanLuminance, expected, kFurnaceMeanTolerance * expected) << "max depth " << depth;
+    }
+}
+
 // The irradiance KHR_lights_punctual prescribes at p on the plane y = 0 (normal +Y), no photometric factor.
 glm::dvec3 planeIrradiance(const Light& light, const glm::vec3& p) {
     if (light.type == LightType::Directional) {

@@ -25,7 +25,11 @@ struct Tolerances {
     double intensityLinearity = 1e-3;   // relative L1 between image / intensity at 1e-4 … 1e6 and at 1
     double flatSceneIndirect = 0.01;    // indirect / direct mean of a lone plane (truth: 0)
     double wallOnVoxelBoundary = 0.10;  // lit-room mean, wall on a voxel boundary vs. inside a voxel
-    double insideGeometry = 0.30;       // mean inside a closed block / usual view's (truth 0; measured 0.23)
+    // Mean inside a closed block / usual view's (truth 0). Measured 0.23 with one bounce and
+    // two-sided voxels; 0.41 since voxels are one-sided (transparent from behind, which removes
+    // self-illumination) and the light converges: from inside, the block's faces are seen from
+    // behind. Two-layer thin walls would bring it back to ~0.
+    double insideGeometry = 0.45;
 };
 constexpr Tolerances kTolerances;
 
@@ -264,8 +268,8 @@ TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight)
     // Inside the tall block, whose inner faces no light reaches: the ground truth is black. The
     // shadow maps get that right; the cones do not: the block's faces are thinner than a voxel, and
     // cones starting on their inner side see the lit outer side's voxels (the light leak of
-    // FailureModes.ThinWallLeaks…, at its worst in a closed box). Measured: 23 % of the usual
-    // view's mean at 64³; bounded here so that it cannot grow unnoticed.
+    // FailureModes.ThinWallLeaks…, at its worst in a closed box), and one-sided voxels are
+    // transparent from behind. Bounded (kTolerances.insideGeometry) so that it cannot grow unnoticed.
     const Scene cornell = loadScene("cornell");
     Renderer renderer(gpu(), cornell, smallSettings(32, 64));
     const double usual = bench::meanLuminance(render(renderer, "usual view"));

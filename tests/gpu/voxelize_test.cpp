@@ -433,6 +433,23 @@ TEST_F(Voxelize, EmptySceneGivesAnEmptyGrid) {
         for (const glm::vec4& texel : *image) ASSERT_EQ(texel, glm::vec4(0.0f));
 }
 
+TEST_F(Voxelize, EmissionIsTheMeanOfTheEmittingTrianglesOnly) {
+    // A lamp 1 mm under a ceiling, both in voxel (5, 5, 5): the voxel keeps the lamp's whole emission
+    // (averaged with the ceiling it would keep half), while its albedo and opacity count both.
+    const Scene scene =
+        makeScene({{glm::vec3(5.25f, 5.5f, 5.25f), glm::vec3(5.25f, 5.5f, 5.75f), glm::vec3(5.75f, 5.5f, 5.25f)},
+                   {glm::vec3(5.1f, 5.501f, 5.1f), glm::vec3(5.1f, 5.501f, 5.9f), glm::vec3(5.9f, 5.501f, 5.1f)}},
+                  {0, 1}, {{{1.0f, 1.0f, 1.0f}, {3.0f, 2.0f, 1.0f}}, {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}}});
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    const size_t voxel = 5 + 32 * (5 + 32 * 5);
+    EXPECT_NEAR(gpu.emission[voxel].r, 3.0f, kEmissionTolerance * 3.0f);
+    EXPECT_NEAR(gpu.emission[voxel].g, 2.0f, kEmissionTolerance * 3.0f);
+    EXPECT_NEAR(gpu.emission[voxel].b, 1.0f, kEmissionTolerance * 3.0f);
+    EXPECT_NEAR(gpu.albedoOpacity[voxel].r, 0.5f, kAlbedoTolerance);
+    EXPECT_EQ(gpu.albedoOpacity[voxel].a, 1.0f);
+    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
 TEST_F(Voxelize, SixtyFiveThousandTrianglesInOneVoxelDoNotOverflow) {
     // The largest values each sum can receive, 70 000 times over (more than the 65 535 promised).
     const TriangleF triangle = {glm::vec3(5.1f, 5.1f, 5.5f), glm::vec3(5.9f, 5.1f, 5.5f), glm::vec3(5.1f, 5.9f, 5.5f)};

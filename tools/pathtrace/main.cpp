@@ -27,6 +27,8 @@ constexpr const char* kUsage =
     "  --threads N               worker threads (default: all hardware threads)\n"
     "  --seed S                  random seed (default 1); images depend on it, not on --threads\n"
     "  --time-limit SEC          stop after the pass that exceeds SEC, with fewer samples\n"
+    "  --max-depth N             surface interactions that gather light: 1 = direct light only, 2 adds\n"
+    "                            one bounce of indirect light, N adds N - 1 (default: every bounce)\n"
     "  --camera-pos x,y,z --camera-target x,y,z --fov DEGREES\n"
     "                            override the scene's first camera (+Y up, vertical field of view)\n"
     "Writes FILE.pfm (linear radiance; .png also works) and FILE.json (spp, seconds, noise).\n";
@@ -37,6 +39,7 @@ struct Options {
     pt::RenderSettings settings;
     std::optional<glm::vec3> cameraPosition, cameraTarget;
     std::optional<float> fovDegrees;
+    std::optional<uint32_t> maxDepth;
 };
 
 template <typename T>
@@ -81,6 +84,7 @@ Options parseOptions(int argc, char** argv) {
         else if (option == "--threads") s.threads = parseNumber<uint32_t>(option, value);
         else if (option == "--seed") s.seed = parseNumber<uint64_t>(option, value);
         else if (option == "--time-limit") s.timeLimitSeconds = parseNumber<double>(option, value);
+        else if (option == "--max-depth") options.maxDepth = parseNumber<uint32_t>(option, value);
         else if (option == "--camera-pos") options.cameraPosition = parseVector(option, value);
         else if (option == "--camera-target") options.cameraTarget = parseVector(option, value);
         else if (option == "--fov") options.fovDegrees = parseNumber<float>(option, value);
@@ -145,7 +149,8 @@ int run(int argc, char** argv) {
     const vct::Scene scene = vct::loadScene(options.scene);
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     options.settings.camera = chooseCamera(scene, options);
-    const pt::PathTracer tracer = pt::createPathTracer(scene);
+    pt::PathTracer tracer = pt::createPathTracer(scene);
+    if (options.maxDepth) tracer.maxDepth = *options.maxDepth;
     const pt::RenderSettings& s = options.settings;
     const unsigned threads = s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
 
@@ -154,6 +159,7 @@ int run(int argc, char** argv) {
     const std::string json =
         "{\n  \"scene\": " + vct::jsonString(options.scene) + ",\n  \"mode\": \"" + modeName(s.component) +
         "\",\n  \"width\": " + std::to_string(s.width) + ",\n  \"height\": " + std::to_string(s.height) +
+        ",\n  \"max_depth\": " + std::to_string(tracer.maxDepth) +
         ",\n  \"spp\": " + std::to_string(result.samplesPerPixel) +
         ",\n  \"spp_requested\": " + std::to_string(s.samplesPerPixel) + ",\n  \"seed\": " + std::to_string(s.seed) +
         ",\n  \"threads\": " + std::to_string(threads) + ",\n  \"seconds\": " + sidecarNumber(result.seconds) +

@@ -292,10 +292,13 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
     const bool wantIndirect = component != Component::Direct;
     glm::vec3 radiance(0.0f), throughput(1.0f);
     float previousBsdfPdf = 0.0f;
-    for (uint32_t depth = 1; depth <= tracer.maxDepth; ++depth) {
+    // One interaction past maxDepth: emission that BRDF sampling finds there belongs to the light
+    // the last gathering vertex received (its other half is that vertex's light sampling).
+    for (uint32_t depth = 1; depth <= tracer.maxDepth + 1; ++depth) {
         const std::optional<RayHit> hit = closestHit(tracer.bvh, ray);
         if (!hit) break;
         const SurfacePoint s = surfaceAt(tracer, *hit, ray.direction);
+        const bool gathers = depth <= tracer.maxDepth;
 
         if (!isBlack(s.emission)) {
             if (depth == 1) {
@@ -309,6 +312,7 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
                 radiance += throughput * s.emission * powerHeuristic(previousBsdfPdf, lightPdf);
             }
         }
+        if (!gathers) break;
         if (depth == 1 ? wantDirect : wantIndirect) radiance += throughput * punctualLight(tracer, s);
         if (!wantIndirect) break;
         if (tracer.sampleEmitters) radiance += throughput * emissiveLight(tracer, s, rng);

@@ -49,7 +49,10 @@ struct PathTracer {
     Bvh bvh;
     std::vector<LinearTexture> textures;
     EmitterTable emitters;
-    uint32_t maxDepth = 64;  // a safety net: Russian roulette ends paths long before
+    // Surface interactions that gather light, as PBRT counts them: 1 = direct light only, 2 adds
+    // one bounce of indirect light, N adds N − 1 bounces. The default is a safety net: Russian
+    // roulette ends paths long before, so the image holds every bounce.
+    uint32_t maxDepth = 64;
     // false: emissive surfaces are found by BRDF sampling alone, an independent (noisier) estimator
     // that the tests hold the MIS one against.
     bool sampleEmitters = true;
