@@ -140,8 +140,10 @@ int runBench(const std::vector<std::string>& rawArguments) {
         RenderSettings settings = preset ? *preset : RenderSettings{};
         settings.image.width = imageSettings.image.width;
         settings.image.height = imageSettings.image.height;
-        const bench::FailureModeReport report =
-            bench::measureFailureModes(context, settings, cornellReferences ? &cornellReferences->indirect : nullptr);
+        const bench::FailureModeReport report = bench::measureFailureModes(
+            context, settings,
+            cornellReferences && cornellReferences->indirectOneBounce ? &*cornellReferences->indirectOneBounce
+                                                                      : nullptr);
         writeFileAtomically(outDir + "/failure_modes.json", bench::failureModesJson(report));
         std::printf("\n%swrote %s/failure_modes.json\n", bench::failureModesText(report).c_str(), outDir.c_str());
         for (const bench::ResolutionLuminance& r : report.drift)

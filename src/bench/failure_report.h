@@ -19,16 +19,17 @@ struct FailureModeReport {
         LeakMeasurement measurement;
     };
     std::vector<Leak> leaks;
-    std::vector<ResolutionLuminance> drift;           // Cornell box, indirect light
-    double driftReference = -1.0;                     // the path tracer's indirect mean luminance; −1 = none
+    std::vector<ResolutionLuminance> drift;           // Cornell box, the first bounce of indirect light
+    double driftReference = -1.0;                     // the path tracer's one-bounce mean luminance; −1 = none
     FlickerMeasurement flickerFull, flickerIndirect;  // 1 mm camera and light steps, Cornell box
     SelfIllumination selfIllumination;                // a lone sunlit plane, ground truth 0
 };
 
-// `settings` gives the image size and the cone setup; the drift runs it at 32³…256³. With the
-// Cornell box's indirect reference (same image size) the drift is also compared with it.
+// `settings` gives the image size and the cone setup; the drift runs its first bounce at
+// 32³…256³. With the Cornell box's one-bounce reference (same image size) the drift is also
+// compared with it.
 FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings& settings,
-                                      const Image* cornellIndirectReference);
+                                      const Image* cornellOneBounceReference);
 
 std::string failureModesText(const FailureModeReport& report);
 std::string failureModesJson(const FailureModeReport& report);

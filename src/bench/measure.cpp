@@ -73,6 +73,11 @@ std::optional<References> loadReferences(const std::string& directory, const std
         return std::nullopt;
     references.full = std::filesystem::exists(base + "-full.pfm") ? readPfm(base + "-full.pfm")
                                                                   : addImages(references.direct, references.indirect);
+    const std::string oneBounce = base + "-indirect-1bounce.pfm";
+    if (std::filesystem::exists(oneBounce)) {
+        Image image = readPfm(oneBounce);
+        if (image.width == width && image.height == height) references.indirectOneBounce = std::move(image);
+    }
     references.directNoise = jsonNumber(base + "-direct.json", "relative_noise");
     references.indirectNoise = jsonNumber(base + "-indirect.json", "relative_noise");
     references.directSpp = uint32_t(std::max(0.0, jsonNumber(base + "-direct.json", "spp")));

@@ -29,8 +29,9 @@
 namespace vct::bench {
 
 struct References {
-    Image full, direct, indirect;  // full = direct + indirect unless a -full.pfm exists
-    double directNoise = -1.0;     // the path tracer's relative noise from the JSON sidecars; −1 = unknown
+    Image full, direct, indirect;            // full = direct + indirect unless a -full.pfm exists
+    std::optional<Image> indirectOneBounce;  // SCENE-indirect-1bounce.pfm: paths cut after one bounce
+    double directNoise = -1.0;               // the path tracer's relative noise from the JSON sidecars; −1 = unknown
     double indirectNoise = -1.0;
     uint32_t directSpp = 0, indirectSpp = 0;
 };

@@ -1,5 +1,6 @@
 # Runs `vct bench --preset fast` on a tiny image and checks failure_modes.json: three leak
-# measurements, the Cornell box's indirect light at 32³…256³ voxels and the flicker figures, all
+# measurements, the Cornell box's first bounce at 32³…256³ voxels, a lone plane's self-illumination
+# and the flicker figures, all
 # finite numbers (the JSON writes non-finite numbers as null), every image finite.
 #   cmake -DVCT=path/to/vct -DOUT_DIR=dir -P check_bench_failure_modes.cmake
 cmake_minimum_required(VERSION 3.22)
@@ -42,6 +43,7 @@ foreach(i 0 1 2 3)
   endif()
 endforeach()
 expect_number(resolution_drift spread)
+expect_number(self_illumination ratio)
 foreach(mode full indirect)
   foreach(move camera light)
     expect_number(flicker ${mode} ${move})
