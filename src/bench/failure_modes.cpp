@@ -51,18 +51,23 @@ Camera roomCamera(glm::vec3 position, glm::vec3 forward) {
     return camera;
 }
 
+// A grey that reflects only diffusely (no specular lobe, so no specular cone either).
+Material lambertianWhite(float albedo) {
+    Material white;
+    white.name = "white";
+    white.baseColorFactor = glm::vec4(albedo, albedo, albedo, 1.0f);
+    white.metallic = 0.0f;
+    white.roughness = 1.0f;
+    white.specularWeight = 0.0f;
+    return white;
+}
+
 }  // namespace
 
 Scene makeTwoRoomScene(float wallX) {
     Scene scene;
     scene.name = "two rooms";
-    Material white;
-    white.name = "white";
-    white.baseColorFactor = glm::vec4(0.7f, 0.7f, 0.7f, 1.0f);
-    white.metallic = 0.0f;
-    white.roughness = 1.0f;
-    white.specularWeight = 0.0f;  // Lambertian: no specular cone, the leak is all diffuse
-    scene.materials.push_back(white);
+    scene.materials.push_back(lambertianWhite(0.7f));  // no specular cone: the leak is all diffuse
 
     // The outer shell spans x −1…1, y 0…1, z 0…1 whatever wallX is, so the voxel grid is fixed and
     // wallX alone says where the wall falls inside its voxels.
@@ -88,13 +93,7 @@ Scene makeTwoRoomScene(float wallX) {
 Scene makeLonePlaneScene() {
     Scene scene;
     scene.name = "lone plane";
-    Material white;
-    white.name = "white";
-    white.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
-    white.metallic = 0.0f;
-    white.roughness = 1.0f;
-    white.specularWeight = 0.0f;
-    scene.materials.push_back(white);
+    scene.materials.push_back(lambertianWhite(0.8f));
     addQuad(scene, {{{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}}, {0, 1, 0}, 0);
     Light sun;
     sun.name = "sun";

@@ -6,7 +6,7 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     // Each preset is a point on the Pareto front `vct bench` measured over the five built-in scenes
     // on lavapipe (README, "Accuracy"): GPU time of a static frame against the relMSE of full
     // light, the light converged. Narrow 40° cones beat the renderer's default 60° ones wherever
-    // six cones are traced (geometric-mean relMSE 0.18 against 0.22 at 64³); with one cone the
+    // six cones are traced (geometric-mean relMSE 0.19 against 0.23 at 64³); with one cone the
     // wide one is better. 128³ voxels measured no better than 64³ at 128×128.
 
     // One 60° cone along the normal at 32³ with long steps: an eighth of `balanced`'s time.

@@ -162,8 +162,10 @@ void Renderer::writeFrameConstants() {
     constants.coneStep = shading.coneStep;
     constants.coneMaxDistance = shading.coneMaxDistance * resolution;
     // In world units (voxels of a 64³ grid over the same scene), so that a finer grid does not
-    // start its cones nearer the surface and see light a coarser one skips.
-    constants.coneStartOffset = shading.coneStartOffset * resolution / float(kConeStartGrid);
+    // start its cones nearer the surface and see light a coarser one skips; but never inside the
+    // surface's own voxels, which a coarser grid's cones would otherwise start in.
+    constants.coneStartOffset =
+        std::max(shading.coneStartOffset * resolution / float(kConeStartGrid), shading.coneStartOffset);
     constants.aoFalloff = shading.aoFalloff / resolution;
     constants.coneStopOpacity = shading.coneStopOpacity;
     constants.diffuseCentreWeight = shading.diffuseCentreWeight;

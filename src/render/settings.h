@@ -110,7 +110,7 @@ struct ShadingSettings {
     float diffuseCentreWeight = 0.25f;  // the ring shares the rest equally (0.15 each for 6 cones)
     float coneStep = 0.5f;              // step along a cone, as a fraction of its diameter there
     float coneMaxDistance = 1.0f;       // longest cone, as a fraction of the grid's side
-    float coneStartOffset = 1.5f;       // gap between the surface and a cone's apex, in voxels of a 64³ grid
+    float coneStartOffset = 1.5f;       // surface to cone apex, in voxels of a 64³ grid (and at least of this one)
     float coneStopOpacity = 0.95f;      // a cone stops once this opaque
     float aoFalloff = 8.0f;             // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
     bool skipEmptySpace = true;         // march through empty space with the coarse mips

@@ -160,14 +160,20 @@ Estimate regionLuminance(const RenderResult& r, uint32_t x0, uint32_t y0, uint32
     return {sum / count, std::sqrt(variance) / count};
 }
 
-TEST(PathTracer, WhiteFurnaceClosedBoxGivesEmissionOverOneMinusAlbedo) {
-    // Inside a closed box whose walls all emit E and reflect a fraction a diffusely, radiance is
-    // E + a·E + a²·E + … = E / (1 − a) in every direction.
-    const float emission = 0.5f, albedo = 0.8f;
+// A closed unit box whose walls all emit `emission` and reflect `albedo` diffusely, a camera inside.
+Scene furnaceScene(float emission, float albedo) {
     Scene scene;
     const uint32_t wall = addMaterial(scene, lambertian(glm::vec3(albedo), glm::vec3(emission)));
     addInwardBox(scene, 1.0f, {wall, wall, wall, wall, wall, wall});
     scene.cameras.push_back(cameraLookingAt(glm::vec3(0.1f, 0.2f, 0.3f), glm::vec3(1.0f, 0.6f, -1.0f), 1.5f));
+    return scene;
+}
+
+TEST(PathTracer, WhiteFurnaceClosedBoxGivesEmissionOverOneMinusAlbedo) {
+    // Inside a closed box whose walls all emit E and reflect a fraction a diffusely, radiance is
+    // E + a·E + a²·E + … = E / (1 − a) in every direction.
+    const float emission = 0.5f, albedo = 0.8f;
+    const Scene scene = furnaceScene(emission, albedo);
     const PathTracer tracer = createPathTracer(scene);
     const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 7));
 
@@ -187,10 +193,7 @@ TEST(PathTracer, MaxDepthKeepsThatManyBouncesOfTheFurnace) {
     // emission and D reflections of it, E·(1 + a + … + a^D). D = 1 is direct light only (here the
     // walls' emission reflected once); the bench's one-bounce references use D = 2.
     const float emission = 0.5f, albedo = 0.8f;
-    Scene scene;
-    const uint32_t wall = addMaterial(scene, lambertian(glm::vec3(albedo), glm::vec3(emission)));
-    addInwardBox(scene, 1.0f, {wall, wall, wall, wall, wall, wall});
-    scene.cameras.push_back(cameraLookingAt(glm::vec3(0.1f, 0.2f, 0.3f), glm::vec3(1.0f, 0.6f, -1.0f), 1.5f));
+    const Scene scene = furnaceScene(emission, albedo);
     PathTracer tracer = createPathTracer(scene);
     for (uint32_t depth : {0u, 1u, 2u, 4u}) {
         tracer.maxDepth = depth;

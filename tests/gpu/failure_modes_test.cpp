@@ -16,8 +16,8 @@ namespace {
 // renderer as it is, not what it should reach:
 // - leak: 0.1 % (wall on a voxel boundary) to 1.3 % (wall half a voxel in) of the lit room's mean
 //   at 32³ with converged bounces; the ground truth is 0.
-// - brightness against resolution (Cornell box, first bounce, 32² × 2², anisotropic): 0.92, 0.85,
-//   0.80, 0.81 × its one-bounce path-traced truth at 32³, 64³, 128³, 256³ (spread 13 %). The
+// - brightness against resolution (Cornell box, first bounce, 32² × 2², anisotropic): 0.91, 0.86,
+//   0.81, 0.81 × its one-bounce path-traced truth at 32³, 64³, 128³, 256³ (spread 12 %). The
 //   coarsest grid's voxels are thicker than the surfaces they hold and reflect a little more.
 // - flicker: 1 mm camera or light steps change 0.3–0.8 % of the image (relative L1).
 // - self-illumination: a lone lit plane gets no indirect light at all (0.00 %).

@@ -59,13 +59,15 @@ protected:
         fs::create_directories(directory);
     }
 
-    // Runs `vct view` in `directory` on a small window with 64³ voxels; returns the exit code.
+    // Runs `vct view` in `directory` on a small window with 64³ voxels and one bounce (so that a
+    // frame changes only what the script changed: converging bounces brighten the first frames,
+    // which View.ProgressiveBouncesSettleAndThenTheImageStays checks); returns the exit code.
     int runViewer(const std::string& arguments) {
         const fs::path logPath = directory / "log.txt";
         const std::string command = "cd '" + directory.string() +
                                     "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
                                     " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE
-                                    " view --validate --no-guide --voxels 64 --shadow-map 512 "
+                                    " view --validate --no-guide --voxels 64 --shadow-map 512 --bounces 1 "
                                     "--width 320 --height 180 " +
                                     arguments + " > '" + logPath.string() + "' 2>&1";
         const int status = std::system(command.c_str());
@@ -108,6 +110,16 @@ TEST_F(View, FlyingAndLookingMoveTheCamera) {
         "7 button right down; 7 mouse 200 100; 8 button right up; 9 screenshot after.png; 10 quit";
     ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
     EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << log;
+}
+
+TEST_F(View, ProgressiveBouncesSettleAndThenTheImageStays) {
+    // The viewer's own bounces: one per frame until the light converges (a few frames at 64³),
+    // then frames reuse the image. The later --bounces wins over the one runViewer passes.
+    const std::string events =
+        std::string(hidePanels) + "1 screenshot first.png; 30 screenshot settled.png; 32 screenshot still.png; 33 quit";
+    ASSERT_EQ(runViewer("--bounces converged --events '" + events + "'"), 0) << log;
+    EXPECT_GT(changedFraction(screenshot("first.png"), screenshot("settled.png")), 0.05) << "later bounces add light";
+    EXPECT_LT(changedFraction(screenshot("settled.png"), screenshot("still.png")), 0.001) << "settled";
 }
 
 TEST_F(View, ResetKeyReturnsToTheSceneCamera) {
