@@ -59,6 +59,8 @@ std::string componentOptionNames() {
 std::vector<Option> makeSharedOptions() {
     using S = RenderSettings;
     using V = OptionValue;
+    std::string sceneNames;
+    for (const std::string& name : builtinSceneNames()) sceneNames += " " + name;
     return {
         {"preset", "NAME", "start from a preset (" + presetNames() + "); the options below override it", applyPreset},
         {"width", "W", "image width in pixels", [](const V& v, S& s) { s.image.width = v.whole(1, 16384); },
@@ -109,7 +111,7 @@ std::vector<Option> makeSharedOptions() {
         {"local-shadow-map", "N", "shadow-map size of each spot light and point-light cube face",
          [](const V& v, S& s) { s.resources.localShadowMapSize = v.whole(16, 16384); },
          [](const S& s) { return std::to_string(s.resources.localShadowMapSize); }},
-        {"scene", "FILE|NAME", "a .gltf/.glb file or a built-in scene (default cornell):"},
+        {"scene", "FILE|NAME", "a .gltf/.glb file or a built-in scene (default cornell):" + sceneNames},
         {"camera-pos", "x,y,z", "camera position (overrides the scene's camera)"},
         {"camera-target", "x,y,z", "the point the camera looks at"},
         {"fov", "DEGREES", "vertical field of view"},
@@ -126,13 +128,7 @@ std::vector<Option> makeSharedOptions() {
 }  // namespace
 
 const std::vector<Option>& sharedOptions() {
-    static const std::vector<Option> options = [] {
-        std::vector<Option> rows = makeSharedOptions();
-        for (Option& row : rows)
-            if (row.name == "scene")
-                for (const std::string& name : builtinSceneNames()) row.help += " " + name;
-        return rows;
-    }();
+    static const std::vector<Option> options = makeSharedOptions();
     return options;
 }
 

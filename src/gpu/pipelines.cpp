@@ -24,7 +24,7 @@ std::string spirvDirectory() {
     return std::string(VCT_SOURCE_DIR) + "/spirv";
 }
 
-std::vector<uint32_t> loadSpirv(const std::string& name) {
+ShaderCode loadShader(const std::string& name) {
     const std::string path = spirvDirectory() + "/" + name + ".spv";
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) throw Error("cannot open the shader '" + path + "' (set VCT_SPIRV_DIR to the spirv/ folder)");
@@ -34,29 +34,25 @@ std::vector<uint32_t> loadSpirv(const std::string& name) {
     file.seekg(0);
     file.read(reinterpret_cast<char*>(code.data()), size);
     if (!file || code[0] != 0x07230203u) throw Error("the shader '" + path + "' is not SPIR-V");
-    return code;
+    return {name, std::move(code)};
 }
 
-static VkShaderModule createShaderModule(GpuContext& context, const std::vector<uint32_t>& code) {
+VkShaderModule createShaderModule(GpuContext& context, const ShaderCode& code) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = code.size() * sizeof(uint32_t);
-    info.pCode = code.data();
+    info.codeSize = code.words.size() * sizeof(uint32_t);
+    info.pCode = code.words.data();
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(context.device, &info, nullptr, &module));
     return module;
 }
 
-VkShaderModule loadShaderModule(GpuContext& context, const std::string& name) {
-    return createShaderModule(context, loadSpirv(name));
-}
-
-ShaderLayout createShaderLayout(GpuContext& context, const std::vector<std::string>& shaderNames,
+ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCode>& stageCode,
                                 const std::vector<VkDescriptorSetLayout>& laterSets) {
     std::vector<ShaderReflection> stages;
     std::string pipelineName;
-    for (const std::string& name : shaderNames) {
-        stages.push_back(reflectShader(loadSpirv(name), name));
-        pipelineName += (pipelineName.empty() ? "" : " + ") + name;
+    for (const ShaderCode& code : stageCode) {
+        stages.push_back(reflectShader(code.words, code.name));
+        pipelineName += (pipelineName.empty() ? "" : " + ") + code.name;
     }
     const ShaderReflection merged = mergeStages(stages, pipelineName);
     std::vector<VkDescriptorSetLayoutBinding> setZero;
@@ -93,8 +89,9 @@ ShaderLayout createShaderLayout(GpuContext& context, const std::vector<std::stri
 }
 
 Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName) {
-    const ShaderLayout layout = createShaderLayout(context, {shaderName});
-    VkShaderModule module = loadShaderModule(context, shaderName);
+    const ShaderCode code = loadShader(shaderName);
+    const ShaderLayout layout = createShaderLayout(context, {code});
+    VkShaderModule module = createShaderModule(context, code);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -109,20 +106,21 @@ Pipeline createComputePipeline(GpuContext& context, const std::string& shaderNam
     return owned;
 }
 
-static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout,
-                                         const GraphicsPipelineDesc& desc) {
+// `code` holds the vertex shader, then the fragment shader if there is one.
+static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout layout, const GraphicsPipelineDesc& desc,
+                                         const std::vector<ShaderCode>& code) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     std::vector<VkShaderModule> modules;
-    auto addStage = [&](VkShaderStageFlagBits stage, const std::string& name) {
-        modules.push_back(loadShaderModule(context, name));
+    auto addStage = [&](VkShaderStageFlagBits stage, const ShaderCode& stageCode) {
+        modules.push_back(createShaderModule(context, stageCode));
         VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
         info.stage = stage;
         info.module = modules.back();
         info.pName = "main";
         stages.push_back(info);
     };
-    addStage(VK_SHADER_STAGE_VERTEX_BIT, desc.vertexShader);
-    if (!desc.fragmentShader.empty()) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, desc.fragmentShader);
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, code[0]);
+    if (code.size() > 1) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, code[1]);
     const VkSpecializationMapEntry entry{0, 0, sizeof(uint32_t)};
     const VkSpecializationInfo specialization{1, &entry, sizeof(uint32_t), &desc.specializationTextureCount};
     if (desc.specializationTextureCount > 0 && stages.size() > 1) stages[1].pSpecializationInfo = &specialization;
@@ -184,11 +182,11 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
 
 Pipeline createGraphicsPipeline(GpuContext& context, const GraphicsPipelineDesc& desc,
                                 const std::vector<VkDescriptorSetLayout>& laterSets) {
-    std::vector<std::string> shaders = {desc.vertexShader};
-    if (!desc.fragmentShader.empty()) shaders.push_back(desc.fragmentShader);
-    const ShaderLayout layout = createShaderLayout(context, shaders, laterSets);
+    std::vector<ShaderCode> code = {loadShader(desc.vertexShader)};
+    if (!desc.fragmentShader.empty()) code.push_back(loadShader(desc.fragmentShader));
+    const ShaderLayout layout = createShaderLayout(context, code, laterSets);
     Pipeline owned(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // frees the layouts on a throw
-    owned.pipeline = createGraphicsPipeline(context, layout.layout, desc);
+    owned.pipeline = createGraphicsPipeline(context, layout.layout, desc, code);
     return owned;
 }
 

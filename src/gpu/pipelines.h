@@ -15,9 +15,15 @@ namespace vct {
 // of the executable, else the source tree's spirv/.
 std::string spirvDirectory();
 
+// A shader's SPIR-V, read once: its layout is reflected from it and its module made from it.
+struct ShaderCode {
+    std::string name;  // e.g. "gbuffer.frag", for errors
+    std::vector<uint32_t> words;
+};
+
 // Reads spirv/NAME.spv (e.g. "gbuffer.frag"); a missing or malformed file is a vct::Error.
-std::vector<uint32_t> loadSpirv(const std::string& name);
-VkShaderModule loadShaderModule(GpuContext& context, const std::string& name);
+ShaderCode loadShader(const std::string& name);
+VkShaderModule createShaderModule(GpuContext& context, const ShaderCode& code);
 
 // Bindings come from the shaders' SPIR-V (gpu/spirv_reflect.h), never from a list in C++: set 0
 // is a push-descriptor set holding every binding the stages declare, sets 1, 2, … are
@@ -27,7 +33,7 @@ struct ShaderLayout {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // set 0
 };
-ShaderLayout createShaderLayout(GpuContext& context, const std::vector<std::string>& shaderNames,
+ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCode>& stages,
                                 const std::vector<VkDescriptorSetLayout>& laterSets = {});
 
 struct GraphicsPipelineDesc {

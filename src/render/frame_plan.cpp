@@ -31,7 +31,7 @@ FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings) {
     const bool voxelsRead = needsVoxels(settings.shading);
     const bool voxelize = voxelsRead && stale.voxels;
     const uint32_t bounces = settings.resources.bounces;
-    const bool progressive = bounces == kConvergedBounces && settings.shading.progressiveBounces;
+    const bool progressive = bouncesProgressively(settings);
     const bool inject = voxelsRead && (stale.radiance || voxelize || (progressive && stale.bounces));
     FramePlan plan;
     for (Pass pass : kPipelineOrder) {

@@ -182,7 +182,7 @@ FrameStats Renderer::renderFrame() {
     stats.plan = planFrame(stale_, settings_);
     const FramePlan& plan = stats.plan;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
-    const bool progressive = converging && settings_.shading.progressiveBounces;
+    const bool progressive = bouncesProgressively(settings_);
     // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
     auto submit = [&](const std::function<void(VkCommandBuffer)>& record) {
         submitAndWait(context_, [&](VkCommandBuffer commands) {
@@ -201,12 +201,6 @@ FrameStats Renderer::renderFrame() {
         timer_.begin(commands, passName(pass));
         record();
         timer_.end(commands);
-    };
-    auto bounce = [&](VkCommandBuffer commands) {
-        injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                                 *shadowPass_, *volumes_);
-        mipsPass_.record(commands, *volumes_);
-        recordMeanRadiance(commands);
     };
 
     submit([&](VkCommandBuffer commands) {
@@ -228,19 +222,26 @@ FrameStats Renderer::renderFrame() {
         });
         run(commands, Pass::Mips, [&] {
             mipsPass_.record(commands, *volumes_);
-            recordMeanRadiance(commands);
+            if (converging) recordMeanRadiance(commands);
         });
     });
     bool converged = true;
     if (plan.runs(Pass::Inject)) {
         stats.bounces = 1;
-        const bool settled = meanRadianceSettled();  // also remembers this mean for the next bounce
-        if (converging) converged = progressive && settled;
+        // Remembers this mean for the next bounce; only progressive bounces can settle here.
+        if (converging) converged = meanRadianceSettled() && progressive;
     }
     if (plan.runs(Pass::Bounce)) {
         const uint32_t more = converging ? kMaxBouncesPerFrame - 1 : settings_.resources.bounces - 1;
         for (uint32_t i = 0; i < more && !(converging && converged); ++i) {
-            submit([&](VkCommandBuffer commands) { run(commands, Pass::Bounce, [&] { bounce(commands); }); });
+            submit([&](VkCommandBuffer commands) {
+                run(commands, Pass::Bounce, [&] {
+                    injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
+                                             shadowViewsBuffer_.buffer, *shadowPass_, *volumes_);
+                    mipsPass_.record(commands, *volumes_);
+                    if (converging) recordMeanRadiance(commands);
+                });
+            });
             ++stats.bounces;
             if (converging) converged = meanRadianceSettled();
         }

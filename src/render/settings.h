@@ -135,6 +135,11 @@ struct RenderSettings {
 // The components a mode shows (toggles switched off stay off).
 Components effectiveComponents(const ShadingSettings& shading);
 
+// One bounce per frame (progressiveBounces honoured: only converging light can be progressive).
+inline bool bouncesProgressively(const RenderSettings& settings) {
+    return settings.resources.bounces == kConvergedBounces && settings.shading.progressiveBounces;
+}
+
 // Whether the frame reads the voxels at all (indirect light, AO, voxel views): if not, no voxel
 // pass runs.
 bool needsVoxels(const ShadingSettings& shading);

@@ -9,25 +9,18 @@ namespace vct {
 
 std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources) {
     const uint32_t side = resources.voxelResolution, mips = voxelMipCount(side);
-    // Every volume can be copied and cleared (tests fill them; the bounce copies level 0).
-    const VkImageUsageFlags scene = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    const VkImageUsageFlags light = scene;
     const VkFormat half = VK_FORMAT_R16G16B16A16_SFLOAT;
     std::vector<VoxelVolumeDesc> descs = {
-        {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, scene, true},
-        {"voxel normal and count", half, 8, side, 1, scene, true},
-        {"voxel emission", half, 8, side, 1, scene, true},
-        {"voxel radiance", half, 8, side, mips, light, false},
+        {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, true},
+        {"voxel normal and count", half, 8, side, 1, true},
+        {"voxel emission", half, 8, side, 1, true},
+        {"voxel radiance", half, 8, side, mips, false},
     };
     if (resources.anisotropicVoxels)
         for (const char* name : {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y", "voxel radiance -y",
                                  "voxel radiance +z", "voxel radiance -z"})
-            descs.push_back({name, half, 8, side / 2, mips - 1, light, false});
-    if (resources.bounces != 1)
-        descs.push_back({"voxel radiance, next bounce", half, 8, side, 1,
-                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                         false});
+            descs.push_back({name, half, 8, side / 2, mips - 1, false});
+    if (resources.bounces != 1) descs.push_back({"voxel radiance, next bounce", half, 8, side, 1, false});
     return descs;
 }
 
@@ -49,7 +42,10 @@ static GpuImage makeVolume(GpuContext& context, const VoxelVolumeDesc& volume) {
     desc.format = volume.format;
     desc.extent = {volume.side, volume.side, volume.side};
     desc.mipLevels = volume.mipLevels;
-    desc.usage = volume.usage;
+    // Written by storage, read by samplers, and copied and cleared (the bounce copies level 0;
+    // creation and the tests clear and fill them).
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     desc.debugName = volume.name;
     return GpuImage(context, desc);
 }

@@ -19,7 +19,6 @@ struct VoxelVolumeDesc {
     uint32_t texelBytes;
     uint32_t side;  // of level 0
     uint32_t mipLevels;
-    VkImageUsageFlags usage;
     bool sceneVoxels;  // written by the voxelizer (the rest hold light)
 };
 

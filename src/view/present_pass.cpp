@@ -47,9 +47,10 @@ static VkRenderPass createRenderPass(GpuContext& context, VkFormat format) {
 }
 
 // gpu/pipelines.h makes pipelines for dynamic rendering; this one belongs to a VkRenderPass.
-static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout layout, VkRenderPass renderPass) {
-    const VkShaderModule vertex = loadShaderModule(context, "fullscreen.vert");
-    const VkShaderModule fragment = loadShaderModule(context, "tonemap.frag");
+static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout layout, VkRenderPass renderPass,
+                                        const ShaderCode& vertexCode, const ShaderCode& fragmentCode) {
+    const VkShaderModule vertex = createShaderModule(context, vertexCode);
+    const VkShaderModule fragment = createShaderModule(context, fragmentCode);
     VkPipelineShaderStageCreateInfo stages[2]{};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                  nullptr,
@@ -111,9 +112,10 @@ static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout la
 PresentPass::PresentPass(GpuContext& context, VkFormat swapchainFormat)
     : format(swapchainFormat), context_(context), sampler_(context, linearClampSampler()) {
     renderPass = createRenderPass(context, swapchainFormat);
-    const ShaderLayout layout = createShaderLayout(context, {"fullscreen.vert", "tonemap.frag"});
+    const ShaderCode vertex = loadShader("fullscreen.vert"), fragment = loadShader("tonemap.frag");
+    const ShaderLayout layout = createShaderLayout(context, {vertex, fragment});
     tonemap_ = Pipeline(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // freed on a throw
-    tonemap_.pipeline = createTonemapPipeline(context, layout.layout, renderPass);
+    tonemap_.pipeline = createTonemapPipeline(context, layout.layout, renderPass, vertex, fragment);
 }
 
 PresentPass::~PresentPass() {
