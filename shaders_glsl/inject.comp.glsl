@@ -1,14 +1,15 @@
 #version 460
 // Light injection: the outgoing radiance of every occupied voxel, from the direct light it
 // receives (with shadow-map visibility) reflected diffusely, plus its emission. Written to
-// level 0 of the radiance volume as radiance × scale premultiplied by opacity.
+// level 0 of the radiance volume as radiance × scale premultiplied by opacity. One invocation per
+// voxel of the voxelizer's occupied list (voxel_grid.h); the empty voxels stay zero.
 // With gatherBounce = 1 (one more bounce), each voxel also reflects the light its diffuse cones
 // gather from the current volume; it then writes to a separate image, since the cones read the
 // volume it would otherwise overwrite.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = OCCUPIED_GROUP_SIZE) in;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
@@ -20,20 +21,16 @@ layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
 layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
+layout(std430, set = 0, binding = 11) readonly buffer Occupied { OccupiedDispatch occupied; };
 #include "directional_voxels.glsl"
 layout(push_constant) uniform Push { uint gatherBounce; };
 
 #include "cone_tracing.glsl"
 #include "direct_light.glsl"
 
-void main() {
-    ivec3 voxel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(voxel, imageSize(radiance)))) return;
+void injectVoxel(ivec3 voxel) {
     vec4 albedoOpacity = imageLoad(voxelAlbedo, voxel);
-    if (albedoOpacity.a <= 0.0f) {
-        imageStore(radiance, voxel, vec4(0.0f));
-        return;
-    }
     vec3 normalSum = imageLoad(voxelNormal, voxel).xyz;
     float normalLength = length(normalSum);
     vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
@@ -63,4 +60,11 @@ void main() {
     }
     float opacity = albedoOpacity.a;
     imageStore(radiance, voxel, vec4(outgoing * frame.radianceScale * opacity, opacity));
+}
+
+void main() {
+    // The dispatch may be capped below ⌈count / group size⌉: each invocation strides over the rest.
+    uint stride = gl_NumWorkGroups.x * OCCUPIED_GROUP_SIZE;
+    for (uint i = gl_GlobalInvocationID.x; i < occupied.count; i += stride)
+        injectVoxel(ivec3(unpackCell(occupiedVoxels[i])));
 }

@@ -6,6 +6,10 @@
 //           triangle count, clamped to the largest half float.
 //   emission: mean emitted radiance of the emitting triangles (scene units), clamped to the largest
 //             half float; a = opacity.
+// It also lists the occupied voxels (voxel_grid.h), and zeroes level 0 of the light volumes where a
+// voxel is empty: the light passes visit only the listed voxels, so light left where the geometry
+// was would stay. Where a voxel stays occupied its old light stays too: a bounce gathered from the
+// last frame's light (the viewer) still has it when an object moves.
 #extension GL_GOOGLE_include_directive : require
 #include "voxelize.h"
 
@@ -14,6 +18,9 @@ layout(std430, set = 0, binding = 0) readonly buffer Accumulation { uint values[
 layout(set = 0, binding = 1, rgba8) uniform writeonly image3D albedoOpacity;
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D normalCount;
 layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D emission;
+layout(std430, set = 0, binding = 4) writeonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
+layout(std430, set = 0, binding = 5) buffer Occupied { OccupiedDispatch occupied; };
+layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D lightVolumes[2];  // radiance level 0, next bounce
 layout(push_constant) uniform Push { VoxelizeParams params; };
 
 vec3 channelMean(uint first, uint index, float divisor, bool isSigned) {
@@ -36,8 +43,15 @@ void main() {
         imageStore(albedoOpacity, texel, vec4(0.0f));
         imageStore(normalCount, texel, vec4(0.0f));
         imageStore(emission, texel, vec4(0.0f));
+        for (int volume = 0; volume < 2; ++volume) imageStore(lightVolumes[volume], texel, vec4(0.0f));
         return;
     }
+    uint slot = atomicAdd(occupied.count, 1u);
+    occupiedVoxels[slot] = packCell(voxel);
+    // The first voxel of each workgroup's share adds the workgroup, up to the limit (the pass
+    // then loops over the rest).
+    if (slot % OCCUPIED_GROUP_SIZE == 0u && slot / OCCUPIED_GROUP_SIZE < params.dispatch.y)
+        atomicAdd(occupied.groupsX, 1u);
     float n = float(count);
     vec3 albedo = channelMean(ACCUM_ALBEDO, index, n * ALBEDO_FIXED_SCALE, false);
     vec3 normal = channelMean(ACCUM_NORMAL, index, n * NORMAL_FIXED_SCALE, true);

@@ -39,7 +39,7 @@ void main() {
     if (item >= params.grid.resolution.w) return;
     uint resolution = params.grid.resolution.x;
     uvec2 work = workItems[item];
-    uvec3 voxel = unpackTile(work.y) * VOXELIZE_TILE + gl_LocalInvocationID;
+    uvec3 voxel = unpackCell(work.y) * VOXELIZE_TILE + gl_LocalInvocationID;
     if (any(greaterThanEqual(voxel, uvec3(resolution)))) return;
 
     uint triangle = work.x;

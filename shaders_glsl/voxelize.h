@@ -50,12 +50,9 @@ const float HALF_FLOAT_MAX = 65504.0f;
 struct VoxelizeParams {
     VoxelGridParams grid;  // resolution.w = work items
     vec4 emission;         // x fixed-point scale (EMISSION_FIXED_MAX / largest component, 0 if none), y its inverse
-    uvec4 dispatch;        // x workgroups per row of the voxelize dispatch (work item = y · x + x)
+    uvec4 dispatch;        // x workgroups per row of the voxelize dispatch (work item = group.y · x + group.x),
+                           // y the most workgroups the occupied-voxel dispatch may have
 };
-
-// A tile's position (in tiles) packed 10 bits per axis: grids up to 4096 voxels a side.
-SHARED_FN uint packTile(uvec3 tile) { return tile.x | (tile.y << 10u) | (tile.z << 20u); }
-SHARED_FN uvec3 unpackTile(uint packed) { return uvec3(packed & 1023u, (packed >> 10u) & 1023u, packed >> 20u); }
 
 VCT_SHARED_END
 

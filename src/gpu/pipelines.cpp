@@ -218,6 +218,13 @@ DescriptorPush& DescriptorPush::storageImage(uint32_t binding, VkImageView view)
     return *this;
 }
 
+DescriptorPush& DescriptorPush::storageImages(uint32_t binding, const std::vector<VkImageView>& views) {
+    const size_t first = imageCount_;
+    for (VkImageView view : views) images_.at(imageCount_++) = {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
+    addWrite(binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, uint32_t(views.size())).pImageInfo = &images_[first];
+    return *this;
+}
+
 DescriptorPush& DescriptorPush::sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
                                              VkImageLayout layout) {
     images_.at(imageCount_) = {sampler, view, layout};

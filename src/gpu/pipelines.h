@@ -58,6 +58,7 @@ public:
                                  VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     // Array bindings: element i of `binding` gets item i.
     DescriptorPush& buffers(uint32_t binding, const std::vector<VkBuffer>& buffers);
+    DescriptorPush& storageImages(uint32_t binding, const std::vector<VkImageView>& views);
     DescriptorPush& sampledImages(uint32_t binding, const std::vector<VkImageView>& views, VkSampler sampler,
                                   VkImageLayout layout);
     void push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint, VkPipelineLayout layout,

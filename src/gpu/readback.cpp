@@ -69,4 +69,24 @@ std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, u
     return result;
 }
 
+std::vector<uint32_t> readBufferWords(GpuContext& context, const Buffer& buffer, size_t count) {
+    const VkDeviceSize bytes = VkDeviceSize(count) * sizeof(uint32_t);
+    if (bytes > buffer.size)
+        throw Error("readBufferWords: " + std::to_string(count) + " words asked of a buffer of " +
+                    std::to_string(buffer.size) + " bytes");
+    std::vector<uint32_t> words(count);
+    if (count == 0) return words;
+    Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    submitAndWait(context, [&](VkCommandBuffer commands) {
+        memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        const VkBufferCopy region{0, 0, bytes};
+        vkCmdCopyBuffer(commands, buffer.buffer, staging.buffer, 1, &region);
+        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::memcpy(words.data(), staging.mapped, bytes);
+    return words;
+}
+
 }  // namespace vct

@@ -16,4 +16,8 @@ namespace vct {
 std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, uint32_t mip,
                                    VkImageLayout currentLayout);
 
+// The first `count` 32-bit words of a device-local buffer made with TRANSFER_SRC usage, after all
+// earlier GPU writes to it.
+std::vector<uint32_t> readBufferWords(GpuContext& context, const Buffer& buffer, size_t count);
+
 }  // namespace vct

@@ -15,17 +15,16 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuf
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    const GpuImage& radiance = volumes.radiance;
-    dispatch(commands, frameConstants, lights, shadowViews, shadows, volumes,
-             radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0], 0u);
+    dispatch(commands, frameConstants, lights, shadowViews, shadows, volumes, volumes.lightLevelZeroViews()[0], 0u);
 }
 
 void InjectPass::recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
                               const ShadowPass& shadows, VoxelVolumes& volumes) {
     const GpuImage &bounceTarget = volumes.bounceTarget, &radiance = volumes.radiance;
     dispatch(commands, frameConstants, lights, shadowViews, shadows, volumes, bounceTarget.view, 1u);
-    // The bounce's level 0 replaces the first bounce's; every texel is written. Copies want the
-    // transfer layouts, so the two images leave GENERAL for the copy only.
+    // The bounce's level 0 replaces the first bounce's: every occupied texel is written, and the
+    // voxelizer zeroed the empty ones. Copies want the transfer layouts, so the two images leave
+    // GENERAL for the copy only.
     imageBarrier(commands, bounceTarget.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -64,10 +63,11 @@ void InjectPass::dispatch(VkCommandBuffer commands, VkBuffer frameConstants, VkB
         .storageImage(7, volumes.emission.view)
         .storageImage(8, target)
         .sampledImage(9, volumes.radiance.view, sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .buffer(10, volumes.occupiedVoxels.buffer)
+        .buffer(11, volumes.occupiedDispatch.buffer)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
     vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(gatherBounce), &gatherBounce);
-    const uint32_t groups = (volumes.resolution + 3) / 4;
-    vkCmdDispatch(commands, groups, groups, groups);
+    vkCmdDispatchIndirect(commands, volumes.occupiedDispatch.buffer, 0);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);

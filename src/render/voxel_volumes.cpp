@@ -24,8 +24,10 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
     return descs;
 }
 
+static uint64_t occupiedListBytes(uint32_t resolution) { return uint64_t(resolution) * resolution * resolution * 4; }
+
 uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels) {
-    uint64_t bytes = 0;
+    uint64_t bytes = occupiedListBytes(resources.voxelResolution) + sizeof(glsl::OccupiedDispatch);
     for (const VoxelVolumeDesc& desc : voxelVolumeDescs(resources)) {
         if (onlySceneVoxels && !desc.sceneVoxels) continue;
         for (uint32_t level = 0; level < desc.mipLevels; ++level) {
@@ -58,10 +60,21 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     if (resources.anisotropicVoxels)
         for (int direction = 0; direction < 6; ++direction) directional.push_back(makeVolume(context, descs[next++]));
     if (resources.bounces != 1) bounceTarget = makeVolume(context, descs[next++]);
+    occupiedVoxels = Buffer(context, occupiedListBytes(resolution),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
+    // Written by the voxelizer (the count reset by a transfer), read by indirect dispatches.
+    occupiedDispatch = Buffer(context, sizeof(glsl::OccupiedDispatch),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                              false);
 
-    // Zero (no light yet: the first bounce gathers nothing), then GENERAL for good: storage writes
-    // and sampled reads alike use it, so no pass changes a layout.
+    // Zero (no light yet: the first bounce gathers nothing; no voxel listed), then GENERAL for
+    // good: storage writes and sampled reads alike use it, so no pass changes a layout.
     submitAndWait(context, [&](VkCommandBuffer commands) {
+        const glsl::OccupiedDispatch none{0u, 1u, 1u, 0u};
+        vkCmdUpdateBuffer(commands, occupiedDispatch.buffer, 0, sizeof(none), &none);
+        memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
         const VkClearColorValue zero{};
         const VkImageSubresourceRange everything{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
         for (const GpuImage* image : images()) {
@@ -84,6 +97,11 @@ std::vector<VkImageView> VoxelVolumes::directionalViews() const {
     return views;
 }
 
+std::vector<VkImageView> VoxelVolumes::lightLevelZeroViews() const {
+    const VkImageView radianceLevelZero = radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0];
+    return {radianceLevelZero, bounceTarget.image != VK_NULL_HANDLE ? bounceTarget.view : radianceLevelZero};
+}
+
 std::vector<const GpuImage*> VoxelVolumes::images() const {
     std::vector<const GpuImage*> all = {&albedoOpacity, &normal, &emission, &radiance};
     for (const GpuImage& chain : directional) all.push_back(&chain);
@@ -92,7 +110,7 @@ std::vector<const GpuImage*> VoxelVolumes::images() const {
 }
 
 uint64_t VoxelVolumes::allocatedBytes() const {
-    uint64_t bytes = 0;
+    uint64_t bytes = occupiedVoxels.size + occupiedDispatch.size;
     for (const GpuImage* image : images()) bytes += image->memorySize;
     return bytes;
 }

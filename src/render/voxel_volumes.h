@@ -1,8 +1,8 @@
 // Every 3D image of the voxel data, owned in one place with its format: what the voxelizer writes
-// (albedo and opacity, normal, emission), the light injected into it (radiance with its mip
-// chain), the six directional chains of anisotropic voxels and the next bounce's target. Each is
-// cleared and moved to GENERAL once, at creation, and stays there (a copy leaves it for the copy
-// only): the passes order their accesses.
+// (albedo and opacity, normal, emission, and the list of occupied voxels), the light injected into
+// it (radiance with its mip chain), the six directional chains of anisotropic voxels and the next
+// bounce's target. Each image is cleared and moved to GENERAL once, at creation, and stays there (a
+// copy leaves it for the copy only): the passes order their accesses.
 #pragma once
 
 #include <vector>
@@ -24,7 +24,8 @@ struct VoxelVolumeDesc {
 
 // The volumes `resources` call for, in the order VoxelVolumes holds them.
 std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources);
-// Their texels' bytes, every level: the renderer's one estimate of its voxel images' memory.
+// Their texels' bytes, every level, and the occupied-voxel list's: the renderer's one estimate of
+// its voxel data's memory.
 uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels = false);
 
 struct VoxelVolumes {
@@ -41,13 +42,20 @@ struct VoxelVolumes {
     std::vector<GpuImage> directional;
     GpuImage bounceTarget;  // level 0 of the next bounce, written while the cones read radiance (bounces ≠ 1)
     Sampler sampler;        // trilinear between mips, transparent black outside the grid
+    // The occupied voxels (voxel_grid.h): a uint each, room for every voxel of the grid; and their
+    // count with the indirect dispatch over them (glsl::OccupiedDispatch).
+    Buffer occupiedVoxels;
+    Buffer occupiedDispatch;
 
     // The six views of the directional array binding (the isotropic volume stands in when the
     // voxels are isotropic; the shaders then never sample it).
     std::vector<VkImageView> directionalViews() const;
     // Every image above that exists, in voxelVolumeDescs() order.
     std::vector<const GpuImage*> images() const;
-    // What the images' memory requirements asked for.
+    // The two level-0 images the light passes write (radiance, then the next bounce's target or
+    // radiance again where there is none).
+    std::vector<VkImageView> lightLevelZeroViews() const;
+    // What the images' memory requirements asked for, and the occupied-voxel buffers.
     uint64_t allocatedBytes() const;
 };
 

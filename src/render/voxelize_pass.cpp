@@ -84,7 +84,7 @@ std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::ve
                 for (int x = firstTile.x; x <= lastTile.x; ++x) {
                     const glm::dvec3 center = glm::dvec3(x, y, z) * double(tile) + halfTile;
                     if (triangleBoxSeparation(triangle, center, halfTile) > kTileSlack) continue;
-                    items.push_back({position, glsl::packTile(glm::uvec3(x, y, z))});
+                    items.push_back({position, glsl::packCell(glm::uvec3(x, y, z))});
                 }
     }
     return items;
@@ -118,6 +118,7 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     const uint32_t rowLimit = context.properties.limits.maxComputeWorkGroupCount[0];
     params.dispatch.x = std::clamp(uint32_t(items.size()), 1u, rowLimit);
     workGroupRows = (uint32_t(items.size()) + params.dispatch.x - 1) / params.dispatch.x;
+    params.dispatch.y = rowLimit;
 
     for (Buffer& channel : accumulation)
         channel = Buffer(context, cube(resolution) * 4,
@@ -141,9 +142,19 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    // The resolve rewrites every texel of the scene voxels: earlier reads of them must be done.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE);
+    // The resolve rewrites every texel of the scene voxels and the occupied list: earlier reads of
+    // them (the last light passes' indirect dispatches among them) must be done. The list starts
+    // empty.
+    memoryBarrier(commands,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_NONE);
+    const glsl::OccupiedDispatch none{0u, 1u, 1u, 0u};
+    vkCmdUpdateBuffer(commands, volumes.occupiedDispatch.buffer, 0, sizeof(none), &none);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     if (params.grid.resolution.w > 0) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
@@ -167,14 +178,19 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
         .storageImage(1, volumes.albedoOpacity.view)
         .storageImage(2, volumes.normal.view)
         .storageImage(3, volumes.emission.view)
+        .buffer(4, volumes.occupiedVoxels.buffer)
+        .buffer(5, volumes.occupiedDispatch.buffer)
+        .storageImages(6, volumes.lightLevelZeroViews())
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.layout);
     vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
     const uint32_t groups = resolution / 4;
     vkCmdDispatch(commands, groups, groups, groups);
 
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 }  // namespace vct

@@ -82,6 +82,31 @@ TEST_F(Frame, GeometryMoveRevoxelizesAndRedrawsShadows) {
     for (const char* pass : {"shadow", "voxelize", "inject", "mips"}) EXPECT_TRUE(stats.ran(pass)) << pass;
 }
 
+TEST_F(Frame, RemovedGeometryLeavesNoLightBehind) {
+    // The light passes visit only the occupied voxels, so the voxelizer must clear the light of
+    // voxels that became empty: the frame after the tall block is removed equals a fresh render
+    // of the room without it. (Its vertices stay, unused, so the grid does not move.)
+    Scene withoutTallBlock = scene;
+    const size_t kept = scene.triangleCount() - 10;  // the tall block: the last five quads
+    withoutTallBlock.indices.resize(kept * 3);
+    withoutTallBlock.triangleMaterials.resize(kept);
+    RenderSettings settings = smallSettings();
+    settings.shading.mode = RenderMode::Indirect;
+    Renderer changed(gpu(), scene, settings);
+    changed.renderFrame();
+    const Image before = changed.readImage();
+    changed.setGeometry(withoutTallBlock);
+    changed.renderFrame();
+    const Image after = changed.readImage();
+    Renderer fresh(gpu(), withoutTallBlock, settings);
+    fresh.renderFrame();
+    const Image expected = fresh.readImage();
+    const size_t bytes = expected.rgb.size() * sizeof(float);
+    ASSERT_EQ(after.rgb.size(), expected.rgb.size());
+    EXPECT_NE(std::memcmp(before.rgb.data(), expected.rgb.data(), bytes), 0) << "the block made no difference";
+    EXPECT_EQ(std::memcmp(after.rgb.data(), expected.rgb.data(), bytes), 0) << "light was left where the block stood";
+}
+
 TEST_F(Frame, DirectLightNeedsNoVoxels) {
     RenderSettings settings = smallSettings();
     settings.shading.mode = RenderMode::Direct;

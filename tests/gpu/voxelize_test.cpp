@@ -74,6 +74,8 @@ glsl::VoxelGridParams exactGrid(uint32_t resolution, float voxelSize = 1.0f) {
 
 struct VoxelImages {
     std::vector<glm::vec4> albedoOpacity, normal, emission;
+    std::vector<uint32_t> occupied;  // the occupied-voxel list, packed cells
+    glsl::OccupiedDispatch occupiedDispatch{};
     size_t workItems = 0;
     std::vector<PassTime> times;
 };
@@ -95,6 +97,9 @@ VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid,
     images.albedoOpacity = readImage3D(context, volumes.albedoOpacity, 0, VK_IMAGE_LAYOUT_GENERAL);
     images.normal = readImage3D(context, volumes.normal, 0, VK_IMAGE_LAYOUT_GENERAL);
     images.emission = readImage3D(context, volumes.emission, 0, VK_IMAGE_LAYOUT_GENERAL);
+    const std::vector<uint32_t> header = readBufferWords(context, volumes.occupiedDispatch, 4);
+    std::memcpy(&images.occupiedDispatch, header.data(), sizeof(images.occupiedDispatch));
+    images.occupied = readBufferWords(context, volumes.occupiedVoxels, images.occupiedDispatch.count);
     images.workItems = pass.params.grid.resolution.w;
     images.times = timer.results();
     return images;
@@ -143,11 +148,41 @@ Comparison compareWithTwin(const VoxelImages& gpu, const VoxelReference& twin, d
     return result;
 }
 
+// The occupied list names each voxel of opacity 1 once and nothing else, and its dispatch covers it.
+void expectOccupiedListMatchesTheImages(const VoxelImages& gpu, uint32_t resolution) {
+    std::vector<uint8_t> listed(gpu.albedoOpacity.size(), 0);
+    size_t outside = 0, repeated = 0;
+    for (uint32_t packed : gpu.occupied) {
+        const glm::uvec3 voxel = glsl::unpackCell(packed);
+        if (glm::any(glm::greaterThanEqual(voxel, glm::uvec3(resolution)))) {
+            ++outside;
+            continue;
+        }
+        const size_t index = voxel.x + resolution * (voxel.y + size_t(resolution) * voxel.z);
+        if (listed[index]++ > 0) ++repeated;
+    }
+    EXPECT_EQ(outside, 0u) << "listed voxels outside the grid";
+    EXPECT_EQ(repeated, 0u) << "voxels listed twice";
+    size_t unlisted = 0, wronglyListed = 0;
+    for (size_t i = 0; i < listed.size(); ++i) {
+        const bool occupied = gpu.albedoOpacity[i].a > 0.0f;
+        if (occupied && !listed[i]) ++unlisted;
+        if (!occupied && listed[i]) ++wronglyListed;
+    }
+    EXPECT_EQ(unlisted, 0u) << "occupied voxels missing from the list";
+    EXPECT_EQ(wronglyListed, 0u) << "empty voxels in the list";
+    const glsl::OccupiedDispatch& dispatch = gpu.occupiedDispatch;
+    EXPECT_EQ(dispatch.groupsX, (dispatch.count + glsl::OCCUPIED_GROUP_SIZE - 1) / glsl::OCCUPIED_GROUP_SIZE);
+    EXPECT_EQ(dispatch.groupsY, 1u);
+    EXPECT_EQ(dispatch.groupsZ, 1u);
+}
+
 void expectMatchesTwin(const Scene& scene, const glsl::VoxelGridParams& grid, double ambiguousMargin,
                        float largestEmission = 1.0f) {
     const VoxelImages gpu = voxelizeOnGpu(scene, grid);
     const VoxelReference twin = voxelizeReference(scene, grid);
     const Comparison comparison = compareWithTwin(gpu, twin, ambiguousMargin, largestEmission);
+    expectOccupiedListMatchesTheImages(gpu, grid.resolution.x);
     EXPECT_GT(comparison.occupied, 0u);
     EXPECT_EQ(comparison.mismatches, 0u) << comparison.firstMismatch;
     EXPECT_LE(double(comparison.ambiguous), kMaxAmbiguousFraction * double(comparison.occupied))
@@ -421,6 +456,7 @@ TEST_F(Voxelize, DegenerateTrianglesMarkNothingAndNothingIsNaN) {
                         std::isfinite(texel.w));
     for (const glm::vec4& texel : gpu.albedoOpacity) occupied += texel.a > 0.0f;
     EXPECT_EQ(occupied, 1u) << "only the tiny triangle marks a voxel";
+    expectOccupiedListMatchesTheImages(gpu, 32);
     EXPECT_EQ(gpu.albedoOpacity[20 + 32 * (20 + 32 * 20)].a, 1.0f);
     const VoxelReference twin = voxelizeReference(scene, exactGrid(32));
     EXPECT_EQ(std::count_if(twin.count.begin(), twin.count.end(), [](uint32_t c) { return c > 0; }), 1);
@@ -429,6 +465,8 @@ TEST_F(Voxelize, DegenerateTrianglesMarkNothingAndNothingIsNaN) {
 TEST_F(Voxelize, EmptySceneGivesAnEmptyGrid) {
     const VoxelImages gpu = voxelizeOnGpu(makeScene({}), exactGrid(32));
     EXPECT_EQ(gpu.workItems, 0u);
+    EXPECT_EQ(gpu.occupiedDispatch.count, 0u);
+    expectOccupiedListMatchesTheImages(gpu, 32);
     for (const auto* image : {&gpu.albedoOpacity, &gpu.normal, &gpu.emission})
         for (const glm::vec4& texel : *image) ASSERT_EQ(texel, glm::vec4(0.0f));
 }
@@ -476,6 +514,11 @@ TEST_F(Voxelize, CornellBoxMatchesTheCpuTwin) {
                       << test::gpu().deviceName() << ", " << fitted.workItems << " work items\n";
         const Comparison onFaces = compareWithTwin(fitted, voxelizeReference(scene, grid), kAmbiguousMargin);
         EXPECT_EQ(onFaces.mismatches, 0u) << resolution << ": " << onFaces.firstMismatch;
+        // Voxelized three times: each run lists the voxels afresh.
+        expectOccupiedListMatchesTheImages(fitted, resolution);
+        std::cout << "cornell " << resolution << "³: " << fitted.occupied.size() << " occupied voxels ("
+                  << 100.0 * double(fitted.occupied.size()) / double(fitted.albedoOpacity.size())
+                  << " % of the grid)\n";
 
         grid.originVoxelSize -= glm::vec4(glm::vec3(0.37f * grid.originVoxelSize.w), 0.0f);
         const Comparison shifted =
