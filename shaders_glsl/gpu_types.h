@@ -74,7 +74,7 @@ struct FrameConstants {
     uint diffuseConeCount;
     uint skipEmptySpace;  // 1 = march through empty space with the coarse mips
     uint debugVoxelMip;   // the mip level the voxel debug views show
-    uint unused0;
+    uint diffuseDownscale;  // diffuse cones traced once per diffuseDownscale² samples (1 = every sample)
     uint unused1;
 };
 

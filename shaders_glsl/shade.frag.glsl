@@ -16,8 +16,10 @@ layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
 layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
+layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;  // when frame.diffuseDownscale > 1
 
-#include "cone_tracing.glsl"
+#define VCT_UPSAMPLE_DIFFUSE
+#include "reduced_diffuse.glsl"
 #include "debug_views.glsl"
 #include "direct_light.glsl"
 
@@ -25,7 +27,7 @@ layout(location = 0) out vec4 outRadiance;
 
 // Indirect light gathered by cones, split like the direct light into diffuse and specular parts.
 // The split of reflected energy between the two lobes uses the GGX directional albedo.
-vec3 indirectLight(SurfacePoint surface, uint flags) {
+vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
     bool wantDiffuse = (flags & SHOW_INDIRECT_DIFFUSE) != 0u;
     bool wantAmbient = (flags & SHOW_AMBIENT_OCCLUSION) != 0u && frame.ambientFactor > 0.0f;
     bool wantSpecular = (flags & SHOW_INDIRECT_SPECULAR) != 0u;
@@ -36,17 +38,18 @@ vec3 indirectLight(SurfacePoint surface, uint flags) {
     float dielectricSpecular = surface.specularWeight * (DIELECTRIC_F0 * lobe.x + lobe.y);
     vec3 specularAlbedo = mix(vec3(dielectricSpecular), surface.baseColor * lobe.x + lobe.y, surface.metallic);
     vec3 diffuseAlbedo = (1.0f - surface.metallic) * surface.baseColor * (1.0f - dielectricSpecular);
-    // Cones start a little off the surface so they do not see the surface's own voxels.
-    vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
 
     vec3 radiance = vec3(0.0f);
     if (wantDiffuse || wantAmbient) {
-        vec4 gathered = traceDiffuseCones(origin, surface.normal, frame.coneStartOffset);
+        vec4 gathered = frame.diffuseDownscale > 1u ? upsampledDiffuse(pixel, surface.position, surface.normal)
+                                                    : gatherDiffuse(surface.position, surface.normal);
         if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
         if (wantAmbient) radiance += frame.ambientFactor * diffuseAlbedo * (1.0f - gathered.a);
     }
     // Skip the specular cone where the material reflects (almost) nothing specularly.
     if (wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
+        // Like the diffuse cones, it starts a little off the surface, clear of its own voxels.
+        vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
         vec3 reflected = reflect(-surface.toViewer, surface.normal);
         float tanHalf = specularConeTanHalfAperture(ggxAlpha(surface.roughness));
         radiance += specularAlbedo * traceCone(origin, reflected, tanHalf, frame.coneStartOffset,
@@ -81,6 +84,6 @@ void main() {
     uint flags = frame.componentFlags;
     vec3 radiance = directLight(surface, flags);
     if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f) radiance += material.emission.rgb;
-    radiance += indirectLight(surface, flags);
+    radiance += indirectLight(surface, pixel, flags);
     outRadiance = vec4(radiance, 1.0f);
 }

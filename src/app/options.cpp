@@ -70,6 +70,15 @@ std::vector<Option> makeSharedOptions() {
         {"supersample", "N", "samples per pixel side, averaged over the pixel",
          [](const V& v, S& s) { s.image.supersample = v.whole(1, 8); },
          [](const S& s) { return std::to_string(s.image.supersample); }},
+        {"diffuse-resolution", "full|half|quarter",
+         "diffuse cones for every sample, or for one in 2×2 or 4×4, upsampled along the surfaces",
+         [](const V& v, S& s) {
+             const std::string& text = v.text();
+             if (text != "full" && text != "half" && text != "quarter")
+                 throw Error("--diffuse-resolution must be full, half or quarter, not '" + text + "'");
+             s.image.diffuseDownscale = text == "full" ? 1u : text == "half" ? 2u : 4u;
+         },
+         [](const S& s) { return diffuseResolutionName(s.image.diffuseDownscale); }},
         {"mode", "full|direct|indirect", "which light the image holds", applyMode,
          [](const S& s) { return std::string(renderModeName(s.shading.mode)); }},
         {"disable", "LIST", "components to switch off, comma-separated: " + componentOptionNames(), applyDisabled},

@@ -16,8 +16,11 @@ RenderSettings withImage(RenderSettings settings, const RenderSettings& imageSet
 }
 
 // A matrix entry: what differs from the renderer's defaults, at one sample per pixel.
-RenderSettings variant(const ResourceSettings& resources, const ShadingSettings& shading, uint32_t supersample = 1) {
-    return RenderSettings{.image = {.supersample = supersample}, .resources = resources, .shading = shading};
+RenderSettings variant(const ResourceSettings& resources, const ShadingSettings& shading, uint32_t supersample = 1,
+                       uint32_t diffuseDownscale = 1) {
+    return RenderSettings{.image = {.supersample = supersample, .diffuseDownscale = diffuseDownscale},
+                          .resources = resources,
+                          .shading = shading};
 }
 
 // Adds the presets: a preset equal to a matrix setting marks that setting instead of adding one.
@@ -47,6 +50,7 @@ std::string settingLabel(const RenderSettings& s) {
     std::string label = text;
     if (s.image.supersample != 1) label += " ss" + std::to_string(s.image.supersample);
     if (s.resources.sunShadowMapSize != 2048) label += " sm" + std::to_string(s.resources.sunShadowMapSize);
+    if (s.image.diffuseDownscale != 1) label += " d" + std::to_string(s.image.diffuseDownscale);
     return label;
 }
 
@@ -85,6 +89,13 @@ std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {
         // 2×2 samples; a finer sun shadow map
         variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}, 2),
         variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}),
+        // diffuse cones for one sample in 2×2 or 4×4 (d2, d4), upsampled; with 2×2 supersampling
+        // d2 traces them once per pixel while direct light gets four samples
+        variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}, 1, 2),
+        variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}, 1, 4),
+        variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}, 2, 2),
+        variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}, 2, 4),
+        variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}, 1, 2),
     };
     std::vector<BenchSetting> matrix;
     for (const RenderSettings& settings : variants) {

@@ -112,7 +112,8 @@ std::vector<SettingSummary> summarize(const std::vector<Measurement>& measuremen
 std::string toCsv(const std::vector<Measurement>& measurements) {
     const std::vector<std::string> passes = passNames(measurements);
     std::ostringstream csv;
-    csv << "scene,setting,preset,voxels,cones,aperture_deg,step,mips,bounces,supersample,sun_shadow_map,"
+    csv << "scene,setting,preset,voxels,cones,aperture_deg,step,mips,bounces,supersample,diffuse_resolution,sun_shadow_"
+           "map,"
            "static_gpu_ms,static_cpu_ms,light_change_gpu_ms,light_change_cpu_ms,voxelize_ms,all_passes_ms,"
            "device_mb,finite";
     for (const char* mode : kModes)
@@ -126,10 +127,10 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
             << s.resources.voxelResolution << "," << s.shading.diffuseConeCount << ","
             << number(s.shading.diffuseConeAperture) << "," << number(s.shading.coneStep) << ","
             << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << bouncesText(s.resources.bounces)
-            << "," << s.image.supersample << "," << s.resources.sunShadowMapSize << ","
-            << number(m.staticFrame.gpuMilliseconds) << "," << number(m.staticFrame.cpuMilliseconds) << ","
-            << number(m.lightChangeFrame.gpuMilliseconds) << "," << number(m.lightChangeFrame.cpuMilliseconds) << ","
-            << number(m.voxelizeMilliseconds) << ","
+            << "," << s.image.supersample << "," << diffuseResolutionName(s.image.diffuseDownscale) << ","
+            << s.resources.sunShadowMapSize << "," << number(m.staticFrame.gpuMilliseconds) << ","
+            << number(m.staticFrame.cpuMilliseconds) << "," << number(m.lightChangeFrame.gpuMilliseconds) << ","
+            << number(m.lightChangeFrame.cpuMilliseconds) << "," << number(m.voxelizeMilliseconds) << ","
             << number(m.lightChangeFrame.gpuMilliseconds + m.voxelizeMilliseconds) << ","
             << number(double(m.deviceMemoryBytes) / (1024.0 * 1024.0)) << "," << (m.imagesFinite ? 1 : 0);
         for (int mode = 0; mode < 3; ++mode) {
@@ -174,7 +175,9 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
              << ", \"step\": " << jsonNumber(s.shading.coneStep)
              << ", \"anisotropic\": " << (s.resources.anisotropicVoxels ? "true" : "false")
              << ", \"bounces\": " << jsonString(bouncesText(s.resources.bounces))
-             << ", \"supersample\": " << s.image.supersample << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
+             << ", \"supersample\": " << s.image.supersample
+             << ", \"diffuse_resolution\": " << jsonString(diffuseResolutionName(s.image.diffuseDownscale))
+             << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
              << "},\n     \"static\": " << jsonTiming(m.staticFrame)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
              << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds) << ", \"bounces\": " << m.bounces

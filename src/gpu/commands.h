@@ -26,4 +26,10 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags as
 void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
 
+// One full-screen triangle (fullscreen.vert) into `target`, every pixel of it written: begins
+// rendering, sets the viewport, calls `bind` (the pipeline, its descriptors), draws, ends. The
+// target must already be in COLOR_ATTACHMENT_OPTIMAL.
+void drawFullScreen(VkCommandBuffer commands, VkImageView target, uint32_t width, uint32_t height,
+                    const std::function<void()>& bind);
+
 }  // namespace vct

@@ -12,6 +12,7 @@ const char* passName(Pass pass) {
         case Pass::Mips: return "mips";
         case Pass::Bounce: return "bounce";
         case Pass::GBuffer: return "gbuffer";
+        case Pass::DiffuseCones: return "diffuse-cones";
         case Pass::Shade: return "shade";
         case Pass::Resolve: return "resolve";
     }
@@ -40,6 +41,8 @@ FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings) {
         if (pass == Pass::Voxelize) run = voxelize;
         if (pass == Pass::Inject || pass == Pass::Mips) run = inject;
         if (pass == Pass::Bounce) run = inject && bounces != 1 && !progressive;
+        if (pass == Pass::DiffuseCones)
+            run = settings.image.diffuseDownscale > 1 && needsDiffuseCones(settings.shading);
         if (run) plan.passes.push_back(pass);
     }
     return plan;

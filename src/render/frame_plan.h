@@ -4,7 +4,8 @@
 // light changed or the voxels were rebuilt; and no voxel pass runs while the image shows nothing
 // that reads the voxels. With converged bounces the injection gathers the voxels' own cones from
 // the last light (so it is the first bounce of the series), and `bounce` repeats it until the light
-// converges, or, progressively, the next frames do.
+// converges, or, progressively, the next frames do. The diffuse cones have a pass of their own
+// only at a reduced resolution (ImageSettings::diffuseDownscale); otherwise shading traces them.
 #pragma once
 
 #include <array>
@@ -17,9 +18,10 @@
 namespace vct {
 
 // In pipeline order.
-enum class Pass : uint32_t { Shadow, Voxelize, Inject, Mips, Bounce, GBuffer, Shade, Resolve };
-inline constexpr std::array<Pass, 8> kPipelineOrder = {Pass::Shadow, Pass::Voxelize, Pass::Inject, Pass::Mips,
-                                                       Pass::Bounce, Pass::GBuffer,  Pass::Shade,  Pass::Resolve};
+enum class Pass : uint32_t { Shadow, Voxelize, Inject, Mips, Bounce, GBuffer, DiffuseCones, Shade, Resolve };
+inline constexpr std::array<Pass, 9> kPipelineOrder = {Pass::Shadow,       Pass::Voxelize, Pass::Inject,
+                                                       Pass::Mips,         Pass::Bounce,   Pass::GBuffer,
+                                                       Pass::DiffuseCones, Pass::Shade,    Pass::Resolve};
 // "shadow", "voxelize", … as the timings and the profiler name them.
 const char* passName(Pass pass);
 

@@ -93,6 +93,9 @@ void Renderer::resize(const ImageSettings& image) {
     const uint32_t width = image.width, height = image.height;
     const uint32_t samplesWide = width * image.supersample, samplesHigh = height * image.supersample;
     gbufferPass_ = std::make_unique<GBufferPass>(context_, *sceneGpu_, samplesWide, samplesHigh);
+    diffuseConesPass_ = image.diffuseDownscale > 1 ? std::make_unique<DiffuseConesPass>(
+                                                         context_, samplesWide, samplesHigh, image.diffuseDownscale)
+                                                   : nullptr;
     shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
     resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.image.supersample);
 }
@@ -172,6 +175,9 @@ void Renderer::writeFrameConstants() {
     constants.diffuseConeCount = shading.diffuseConeCount;
     constants.skipEmptySpace = shading.skipEmptySpace ? 1u : 0u;
     constants.debugVoxelMip = shading.debugVoxelMip;
+    // The shader upsamples only what the frame plan gathered.
+    constants.diffuseDownscale =
+        settings_.image.diffuseDownscale > 1 && needsDiffuseCones(shading) ? settings_.image.diffuseDownscale : 1u;
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
 }
 
@@ -248,9 +254,12 @@ FrameStats Renderer::renderFrame() {
     }
     submit([&](VkCommandBuffer commands) {
         run(commands, Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
+        run(commands, Pass::DiffuseCones,
+            [&] { diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_); });
         run(commands, Pass::Shade, [&] {
             const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
-                                     shadowViewsBuffer_.buffer};
+                                     shadowViewsBuffer_.buffer,
+                                     plan.runs(Pass::DiffuseCones) ? diffuseConesPass_->gathered.view : VK_NULL_HANDLE};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });

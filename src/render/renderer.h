@@ -14,6 +14,7 @@
 #include "gpu/resources.h"
 #include "gpu/timing.h"
 #include "io/image_io.h"
+#include "render/diffuse_cones_pass.h"
 #include "render/frame_plan.h"
 #include "render/gbuffer_pass.h"
 #include "render/inject_pass.h"
@@ -111,6 +112,7 @@ private:
     MipsPass mipsPass_;
     // Sized by the image: rebuilt by resize() without touching the voxels or shadow maps.
     std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<DiffuseConesPass> diffuseConesPass_;  // only when the diffuse cones run reduced
     std::unique_ptr<ShadePass> shadePass_;
     std::unique_ptr<ResolvePass> resolvePass_;
     GpuTimer timer_;

@@ -22,6 +22,11 @@ std::string bouncesText(uint32_t bounces) {
     return bounces == kConvergedBounces ? "converged" : std::to_string(bounces);
 }
 
+std::string diffuseResolutionName(uint32_t diffuseDownscale) {
+    if (diffuseDownscale <= 1) return "full";
+    return diffuseDownscale == 2 ? "half" : diffuseDownscale == 4 ? "quarter" : "1/" + std::to_string(diffuseDownscale);
+}
+
 const char* debugViewLabel(DebugView view) {
     static const char* const labels[debugViewCount] = {
         "lit image",         "base colour",  "normal",       "depth",
@@ -68,6 +73,12 @@ bool needsVoxels(const ShadingSettings& shading) {
     const Components shown = effectiveComponents(shading);
     return shown.indirectDiffuse || shown.indirectSpecular ||
            (shown.ambientOcclusion && shading.ambientFactor > 0.0f) || shading.debugView >= DebugView::AmbientOcclusion;
+}
+
+bool needsDiffuseCones(const ShadingSettings& shading) {
+    const Components shown = effectiveComponents(shading);
+    return shading.debugView == DebugView::None &&
+           (shown.indirectDiffuse || (shown.ambientOcclusion && shading.ambientFactor > 0.0f));
 }
 
 }  // namespace vct

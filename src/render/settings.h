@@ -77,8 +77,15 @@ struct ImageSettings {
     uint32_t height = 512;
     // Each pixel averages supersample² samples over its square, as "radiance of a pixel" means.
     uint32_t supersample = 2;
+    // Diffuse cones once per diffuseDownscale² samples (1, 2 or 4), upsampled along the surfaces
+    // (shaders_glsl/reduced_diffuse.glsl): they are most of a frame's cost, and the light they
+    // gather changes over voxels, not pixels.
+    uint32_t diffuseDownscale = 1;
     bool operator==(const ImageSettings&) const = default;
 };
+
+// "full", "half" or "quarter", as --diffuse-resolution names ImageSettings::diffuseDownscale 1, 2, 4.
+std::string diffuseResolutionName(uint32_t diffuseDownscale);
 
 struct ResourceSettings {
     uint32_t voxelResolution = 128;  // voxels per side, a power of two from 32 to 512
@@ -143,5 +150,7 @@ inline bool bouncesProgressively(const RenderSettings& settings) {
 // Whether the frame reads the voxels at all (indirect light, AO, voxel views): if not, no voxel
 // pass runs.
 bool needsVoxels(const ShadingSettings& shading);
+// Whether the lit image traces diffuse cones (indirect diffuse light, or AO for the ambient term).
+bool needsDiffuseCones(const ShadingSettings& shading);
 
 }  // namespace vct

@@ -26,40 +26,28 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = radiance.view;
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every pixel is written
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    vkCmdBeginRendering(commands, &rendering);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
-    DescriptorPush push;
-    const VkSampler volumeSampler = volumes.sampler.sampler;
-    push.sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .buffer(1, inputs.materials)
-        .buffer(2, inputs.lights)
-        .buffer(3, inputs.shadowViews)
-        .sampledImage(4, shadows.sunMaps.view, shadows.compareSampler.sampler)
-        .sampledImage(5, shadows.localMaps.view, shadows.compareSampler.sampler)
-        .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
-        .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
-        .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
-        .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
-    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(commands, 0, 1, &viewport);
-    vkCmdSetScissor(commands, 0, 1, &scissor);
-    vkCmdDraw(commands, 3, 1, 0, 0);
-    vkCmdEndRendering(commands);
+    drawFullScreen(commands, radiance.view, width, height, [&] {
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+        const VkSampler volumeSampler = volumes.sampler.sampler;
+        // Without reduced diffuse cones the shader never samples binding 13: the base colour stands in.
+        const VkImageView reducedDiffuse = inputs.reducedDiffuse ? inputs.reducedDiffuse : gbuffer.baseColor.view;
+        DescriptorPush()
+            .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            .buffer(1, inputs.materials)
+            .buffer(2, inputs.lights)
+            .buffer(3, inputs.shadowViews)
+            .sampledImage(4, shadows.sunMaps.view, shadows.compareSampler.sampler)
+            .sampledImage(5, shadows.localMaps.view, shadows.compareSampler.sampler)
+            .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
+            .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
+            .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
+            .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(13, reducedDiffuse, pointSampler.sampler)
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+    });
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -27,7 +27,11 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
 static uint64_t occupiedListBytes(uint32_t resolution) { return uint64_t(resolution) * resolution * resolution * 4; }
 
 uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels) {
-    uint64_t bytes = occupiedListBytes(resources.voxelResolution) + sizeof(glsl::OccupiedDispatch);
+    // The occupied list is the light passes' work list: it counts with the light, not in the
+    // voxelizer's share of the heap (checkVoxelizeMemory), which a 256³ grid fills exactly on
+    // lavapipe (64 bytes a voxel, half of a 2 GiB heap).
+    uint64_t bytes =
+        onlySceneVoxels ? 0 : occupiedListBytes(resources.voxelResolution) + sizeof(glsl::OccupiedDispatch);
     for (const VoxelVolumeDesc& desc : voxelVolumeDescs(resources)) {
         if (onlySceneVoxels && !desc.sceneVoxels) continue;
         for (uint32_t level = 0; level < desc.mipLevels; ++level) {

@@ -24,8 +24,8 @@ struct VoxelVolumeDesc {
 
 // The volumes `resources` call for, in the order VoxelVolumes holds them.
 std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources);
-// Their texels' bytes, every level, and the occupied-voxel list's: the renderer's one estimate of
-// its voxel data's memory.
+// Their texels' bytes, every level, and (not among the scene voxels) the occupied-voxel list's:
+// the renderer's one estimate of its voxel data's memory.
 uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels = false);
 
 struct VoxelVolumes {

@@ -15,8 +15,10 @@ std::vector<std::string> names(const FramePlan& plan) {
 using Names = std::vector<std::string>;
 
 TEST(FramePlan, FirstFrameRunsEveryPassInPipelineOrder) {
-    EXPECT_EQ(names(planFrame(StaleInputs{}, RenderSettings{})),
-              (Names{"shadow", "voxelize", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"}));
+    RenderSettings reducedDiffuse;
+    reducedDiffuse.image.diffuseDownscale = 2;
+    EXPECT_EQ(names(planFrame(StaleInputs{}, reducedDiffuse)), (Names{"shadow", "voxelize", "inject", "mips", "bounce",
+                                                                      "gbuffer", "diffuse-cones", "shade", "resolve"}));
 }
 
 TEST(FramePlan, NothingChangedRunsOnlyTheImagePasses) {
@@ -47,6 +49,25 @@ TEST(FramePlan, DirectLightRunsNoVoxelPassAndKeepsThemStale) {
     EXPECT_FALSE(after.shadows);
     EXPECT_TRUE(after.voxels) << "switching indirect light on later must voxelize then";
     EXPECT_TRUE(after.radiance);
+}
+
+TEST(FramePlan, ReducedDiffuseConesRunBetweenTheGBufferAndShadingWhenTheImageShowsThem) {
+    RenderSettings settings;
+    settings.image.diffuseDownscale = 2;
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
+    EXPECT_EQ(names(planFrame(nothing, settings)), (Names{"gbuffer", "diffuse-cones", "shade", "resolve"}));
+    settings.image.diffuseDownscale = 1;
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::DiffuseCones)) << "shading traces them itself";
+    settings.image.diffuseDownscale = 4;
+    settings.shading.components.indirectDiffuse = false;
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::DiffuseCones)) << "no diffuse light shown";
+    settings.shading.ambientFactor = 0.1f;
+    EXPECT_TRUE(planFrame(nothing, settings).runs(Pass::DiffuseCones)) << "the ambient term needs their occlusion";
+    settings.shading.debugView = DebugView::VoxelAlbedo;
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::DiffuseCones)) << "a debug view shows no light";
+    settings.shading.debugView = DebugView::None;
+    settings.shading.mode = RenderMode::Direct;
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::DiffuseCones));
 }
 
 TEST(FramePlan, AmbientOcclusionReadsTheVoxelsOnlyWithAnAmbientTerm) {
@@ -103,7 +124,8 @@ TEST(FramePlan, AfterAFullFrameNothingIsStale) {
 TEST(FramePlan, SkippedPassesAreTheRestInPipelineOrder) {
     const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
     const std::vector<Pass> skipped = planFrame(nothing, RenderSettings{}).skipped();
-    EXPECT_EQ(skipped, (std::vector<Pass>{Pass::Shadow, Pass::Voxelize, Pass::Inject, Pass::Mips, Pass::Bounce}));
+    EXPECT_EQ(skipped, (std::vector<Pass>{Pass::Shadow, Pass::Voxelize, Pass::Inject, Pass::Mips, Pass::Bounce,
+                                          Pass::DiffuseCones}));
 }
 
 }  // namespace

@@ -200,7 +200,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     // inject.comp.glsl: frame, lights, shadow views, two shadow maps, four voxel images, the radiance
-    // volume, and directional_voxels.glsl's array of six directional volumes at 12.
+    // volume, the occupied-voxel list and its count, and directional_voxels.glsl's array of six
+    // directional volumes at 12; one invocation per listed voxel, 64 to a workgroup.
     const ShaderReflection inject = reflectFile("inject.comp");
     EXPECT_EQ(inject.stage, kCompute);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute),
@@ -209,12 +210,14 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
                                               binding(0, 3, kCombined, kCompute), binding(0, 4, kCombined, kCompute)};
     for (uint32_t b = 5; b <= 8; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
     expected.push_back(binding(0, 9, kCombined, kCompute));
+    expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
+    expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 12, kCombined, kCompute, 6));
     expectBindings(inject.bindings, expected);
     EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint gatherBounce
-    EXPECT_EQ(inject.localSize[0], 4u);
-    EXPECT_EQ(inject.localSize[1], 4u);
-    EXPECT_EQ(inject.localSize[2], 4u);
+    EXPECT_EQ(inject.localSize[0], 64u);
+    EXPECT_EQ(inject.localSize[1], 1u);
+    EXPECT_EQ(inject.localSize[2], 1u);
 }
 
 TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
@@ -224,6 +227,7 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageBuffer, kFragment));
     for (uint32_t b = 4; b <= 11; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
     expected.push_back(binding(0, 12, kCombined, kFragment, 6));  // the directional volumes
+    expected.push_back(binding(0, 13, kCombined, kFragment));     // the reduced diffuse cones
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "bench/metrics.h"
 #include "gpu/readback.h"
 #include "gpu_test.h"
 #include "render/renderer.h"
@@ -29,9 +30,12 @@ protected:
 };
 
 TEST_F(Frame, FirstFrameRunsEveryPass) {
-    Renderer renderer(gpu(), scene, smallSettings());
+    RenderSettings settings = smallSettings();
+    settings.image.diffuseDownscale = 2;  // the diffuse cones in a pass of their own
+    Renderer renderer(gpu(), scene, settings);
     const FrameStats stats = renderer.renderFrame();
-    for (const char* pass : {"shadow", "voxelize", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"})
+    for (const char* pass :
+         {"shadow", "voxelize", "inject", "mips", "bounce", "gbuffer", "diffuse-cones", "shade", "resolve"})
         EXPECT_TRUE(stats.ran(pass)) << pass;
     EXPECT_TRUE(stats.skipped().empty());
     // The timings agree with the plan, in pipeline order.
@@ -177,6 +181,36 @@ double imageSum(const Image& image) {
     double sum = 0.0;
     for (float value : image.rgb) sum += value;
     return sum;
+}
+
+TEST_F(Frame, ReducedDiffuseConesAreNoFurtherFromTheTruth) {
+    // Diffuse cones for one sample in 2×2 or 4×4, upsampled along the surfaces: the Cornell box's
+    // indirect light is as close to the path-traced reference as tracing every sample (what the
+    // upsampling smooths is the voxels' own pattern; bleeding across edges would show here), and
+    // no brighter or darker.
+    RenderSettings settings = smallSettings();
+    settings.image.width = settings.image.height = 128;
+    settings.resources.voxelResolution = 64;
+    settings.shading.mode = RenderMode::Indirect;
+    const Image reference = readPfm(std::string(VCT_SOURCE_DIR) + "/assets/reference/cornell-indirect.pfm");
+    Renderer everySample(gpu(), scene, settings);
+    everySample.renderFrame();
+    EXPECT_FALSE(everySample.renderFrame().ran("diffuse-cones"));
+    const Image full = everySample.readImage();
+    const bench::ImageError fullError = bench::compareImages(full, reference);
+    for (uint32_t downscale : {2u, 4u}) {
+        settings.image.diffuseDownscale = downscale;
+        Renderer reduced(gpu(), scene, settings);
+        reduced.renderFrame();
+        EXPECT_TRUE(reduced.renderFrame().ran("diffuse-cones")) << downscale;
+        const Image image = reduced.readImage();
+        const bench::ImageError error = bench::compareImages(image, reference);
+        const double brightness = bench::compareImages(image, full).luminanceRatio;
+        std::printf("[ diffuse ] 1/%u: relMSE %.4f (every sample %.4f), luminance %.4f of every sample's\n", downscale,
+                    error.relMse, fullError.relMse, brightness);
+        EXPECT_LT(error.relMse, 1.05 * fullError.relMse) << "diffuse downscale " << downscale;
+        EXPECT_NEAR(brightness, 1.0, 0.01) << "diffuse downscale " << downscale;
+    }
 }
 
 TEST_F(Frame, EachBounceAddsLessLightThanTheOneBefore) {
