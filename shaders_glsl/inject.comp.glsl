@@ -9,7 +9,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
-layout(local_size_x = OCCUPIED_GROUP_SIZE) in;
+layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
@@ -22,7 +22,7 @@ layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
-layout(std430, set = 0, binding = 11) readonly buffer Occupied { OccupiedDispatch occupied; };
+layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
 #include "directional_voxels.glsl"
 layout(push_constant) uniform Push { uint gatherBounce; };
 
@@ -64,7 +64,7 @@ void injectVoxel(ivec3 voxel) {
 
 void main() {
     // The dispatch may be capped below ⌈count / group size⌉: each invocation strides over the rest.
-    uint stride = gl_NumWorkGroups.x * OCCUPIED_GROUP_SIZE;
+    uint stride = gl_NumWorkGroups.x * WORK_LIST_GROUP_SIZE;
     for (uint i = gl_GlobalInvocationID.x; i < occupied.count; i += stride)
         injectVoxel(ivec3(unpackCell(occupiedVoxels[i])));
 }

@@ -16,9 +16,10 @@ layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
 layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
-layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;  // when frame.diffuseDownscale > 1
+// The reduced diffuse cones' result per sample, when frame.diffuseDownscale > 1.
+layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
 
-#define VCT_UPSAMPLE_DIFFUSE
+#include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"
 #include "debug_views.glsl"
 #include "direct_light.glsl"
@@ -41,7 +42,7 @@ vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
 
     vec3 radiance = vec3(0.0f);
     if (wantDiffuse || wantAmbient) {
-        vec4 gathered = frame.diffuseDownscale > 1u ? upsampledDiffuse(pixel, surface.position, surface.normal)
+        vec4 gathered = frame.diffuseDownscale > 1u ? texelFetch(reducedDiffuse, pixel, 0)
                                                     : gatherDiffuse(surface.position, surface.normal);
         if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
         if (wantAmbient) radiance += frame.ambientFactor * diffuseAlbedo * (1.0f - gathered.a);

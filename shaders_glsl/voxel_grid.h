@@ -4,6 +4,7 @@
 #define VCT_VOXEL_GRID_H
 
 #include "cpp_glsl.h"
+#include "work_list.h"
 
 VCT_SHARED_BEGIN
 
@@ -24,16 +25,11 @@ SHARED_FN vec3 gridToWorld(VoxelGridParams grid, vec3 gridPosition) {
 SHARED_FN uint packCell(uvec3 cell) { return cell.x | (cell.y << 10u) | (cell.z << 20u); }
 SHARED_FN uvec3 unpackCell(uint packed) { return uvec3(packed & 1023u, (packed >> 10u) & 1023u, packed >> 20u); }
 
-// The occupied voxels, listed by the voxelizer (packCell each, in no particular order) so that the
-// passes over the scene's surfaces (light injection, bounces) run one invocation per occupied voxel
-// rather than per voxel of the grid: a room's walls fill a few percent of its grid, and a 4³ block
-// of invocations cut by a wall would otherwise run its empty lanes alongside the occupied ones.
-// Their count and the indirect dispatch that covers them live in one small buffer:
-const uint OCCUPIED_GROUP_SIZE = 64u;  // invocations per workgroup of a pass over the list
-struct OccupiedDispatch {
-    uint groupsX, groupsY, groupsZ;  // VkDispatchIndirectCommand: ⌈count / 64⌉ capped at the device's limit, 1, 1
-    uint count;                      // occupied voxels listed
-};
+// The occupied voxels are a work list (work_list.h) the voxelizer writes, packCell each, in no
+// particular order, so that the passes over the scene's surfaces (light injection, bounces) run one
+// invocation per occupied voxel rather than per voxel of the grid: a room's walls fill a few
+// percent of its grid, and a 4³ block of invocations cut by a wall would otherwise run its empty
+// lanes alongside the occupied ones.
 
 VCT_SHARED_END
 

@@ -19,7 +19,7 @@ layout(set = 0, binding = 1, rgba8) uniform writeonly image3D albedoOpacity;
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D normalCount;
 layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D emission;
 layout(std430, set = 0, binding = 4) writeonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
-layout(std430, set = 0, binding = 5) buffer Occupied { OccupiedDispatch occupied; };
+layout(std430, set = 0, binding = 5) buffer Occupied { WorkListHeader occupied; };
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D lightVolumes[2];  // radiance level 0, next bounce
 layout(push_constant) uniform Push { VoxelizeParams params; };
 
@@ -48,10 +48,7 @@ void main() {
     }
     uint slot = atomicAdd(occupied.count, 1u);
     occupiedVoxels[slot] = packCell(voxel);
-    // The first voxel of each workgroup's share adds the workgroup, up to the limit (the pass
-    // then loops over the rest).
-    if (slot % OCCUPIED_GROUP_SIZE == 0u && slot / OCCUPIED_GROUP_SIZE < params.dispatch.y)
-        atomicAdd(occupied.groupsX, 1u);
+    if (startsWorkgroup(slot, params.dispatch.y)) atomicAdd(occupied.groupsX, 1u);
     float n = float(count);
     vec3 albedo = channelMean(ACCUM_ALBEDO, index, n * ALBEDO_FIXED_SCALE, false);
     vec3 normal = channelMean(ACCUM_NORMAL, index, n * NORMAL_FIXED_SCALE, true);

@@ -1,6 +1,7 @@
 // The diffuse cones at a reduced resolution (ImageSettings::diffuseDownscale): one G-buffer sample
-// per block traces them, and the shading pass upsamples the result along the surfaces
-// (shaders_glsl/reduced_diffuse.glsl). Only created when the downscale is above 1.
+// per block traces them, every sample blends the nearest along its own surface, and the samples
+// where that fails trace their own, from a work list (shaders_glsl/reduced_diffuse.glsl). Only
+// created when the downscale is above 1.
 #pragma once
 
 #include "gpu/pipelines.h"
@@ -11,17 +12,22 @@
 namespace vct {
 
 struct DiffuseConesPass {
-    // `samplesWide` × `samplesHigh` is the G-buffer's size; the target is that / downscale, rounded up.
+    // `samplesWide` × `samplesHigh` is the G-buffer's size; the reduced image is that / downscale,
+    // rounded up.
     DiffuseConesPass(GpuContext& context, uint32_t samplesWide, uint32_t samplesHigh, uint32_t downscale);
 
-    // Leaves `gathered` in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
+    // Leaves `diffuse` in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
                 const VoxelVolumes& volumes);
 
-    uint32_t width, height;
-    GpuImage gathered;  // RGBA32F: Σ wᵢ Lᵢ of the diffuse cones (scene units), weighted occlusion
+    // RGBA32F (scene units: a sun's light can exceed float16): Σ wᵢ Lᵢ of the diffuse cones and
+    // their weighted occlusion, per representative (`gathered`) and per sample (`diffuse`).
+    GpuImage gathered;
+    GpuImage diffuse;
+    Buffer fallbackSamples;  // the samples that trace their own cones, packed 16 bits a coordinate
+    Buffer fallbackList;     // glsl::WorkListHeader over them
     Sampler pointSampler;
-    Pipeline pipeline;
+    Pipeline gatherPipeline, upsamplePipeline, fallbackPipeline;
 
 private:
     GpuContext& context_;

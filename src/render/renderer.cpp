@@ -259,7 +259,7 @@ FrameStats Renderer::renderFrame() {
         run(commands, Pass::Shade, [&] {
             const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
                                      shadowViewsBuffer_.buffer,
-                                     plan.runs(Pass::DiffuseCones) ? diffuseConesPass_->gathered.view : VK_NULL_HANDLE};
+                                     plan.runs(Pass::DiffuseCones) ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });

@@ -15,7 +15,7 @@ struct ShadeInputs {
     VkBuffer materials;
     VkBuffer lights;
     VkBuffer shadowViews;
-    VkImageView reducedDiffuse = VK_NULL_HANDLE;  // DiffuseConesPass::gathered, when the cones run reduced
+    VkImageView reducedDiffuse = VK_NULL_HANDLE;  // DiffuseConesPass::diffuse, when the cones run reduced
 };
 
 struct ShadePass {

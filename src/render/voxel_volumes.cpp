@@ -30,8 +30,7 @@ uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxel
     // The occupied list is the light passes' work list: it counts with the light, not in the
     // voxelizer's share of the heap (checkVoxelizeMemory), which a 256³ grid fills exactly on
     // lavapipe (64 bytes a voxel, half of a 2 GiB heap).
-    uint64_t bytes =
-        onlySceneVoxels ? 0 : occupiedListBytes(resources.voxelResolution) + sizeof(glsl::OccupiedDispatch);
+    uint64_t bytes = onlySceneVoxels ? 0 : occupiedListBytes(resources.voxelResolution) + sizeof(glsl::WorkListHeader);
     for (const VoxelVolumeDesc& desc : voxelVolumeDescs(resources)) {
         if (onlySceneVoxels && !desc.sceneVoxels) continue;
         for (uint32_t level = 0; level < desc.mipLevels; ++level) {
@@ -67,7 +66,7 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     occupiedVoxels = Buffer(context, occupiedListBytes(resolution),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
     // Written by the voxelizer (the count reset by a transfer), read by indirect dispatches.
-    occupiedDispatch = Buffer(context, sizeof(glsl::OccupiedDispatch),
+    occupiedDispatch = Buffer(context, sizeof(glsl::WorkListHeader),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                               false);
@@ -75,7 +74,7 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     // Zero (no light yet: the first bounce gathers nothing; no voxel listed), then GENERAL for
     // good: storage writes and sampled reads alike use it, so no pass changes a layout.
     submitAndWait(context, [&](VkCommandBuffer commands) {
-        const glsl::OccupiedDispatch none{0u, 1u, 1u, 0u};
+        const glsl::WorkListHeader none{0u, 1u, 1u, 0u};
         vkCmdUpdateBuffer(commands, occupiedDispatch.buffer, 0, sizeof(none), &none);
         memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);

@@ -43,7 +43,7 @@ struct VoxelVolumes {
     GpuImage bounceTarget;  // level 0 of the next bounce, written while the cones read radiance (bounces ≠ 1)
     Sampler sampler;        // trilinear between mips, transparent black outside the grid
     // The occupied voxels (voxel_grid.h): a uint each, room for every voxel of the grid; and their
-    // count with the indirect dispatch over them (glsl::OccupiedDispatch).
+    // count with the indirect dispatch over them (glsl::WorkListHeader).
     Buffer occupiedVoxels;
     Buffer occupiedDispatch;
 

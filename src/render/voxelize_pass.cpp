@@ -150,7 +150,7 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                   VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                   VK_ACCESS_2_NONE);
-    const glsl::OccupiedDispatch none{0u, 1u, 1u, 0u};
+    const glsl::WorkListHeader none{0u, 1u, 1u, 0u};
     vkCmdUpdateBuffer(commands, volumes.occupiedDispatch.buffer, 0, sizeof(none), &none);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -75,7 +75,7 @@ glsl::VoxelGridParams exactGrid(uint32_t resolution, float voxelSize = 1.0f) {
 struct VoxelImages {
     std::vector<glm::vec4> albedoOpacity, normal, emission;
     std::vector<uint32_t> occupied;  // the occupied-voxel list, packed cells
-    glsl::OccupiedDispatch occupiedDispatch{};
+    glsl::WorkListHeader occupiedDispatch{};
     size_t workItems = 0;
     std::vector<PassTime> times;
 };
@@ -171,8 +171,8 @@ void expectOccupiedListMatchesTheImages(const VoxelImages& gpu, uint32_t resolut
     }
     EXPECT_EQ(unlisted, 0u) << "occupied voxels missing from the list";
     EXPECT_EQ(wronglyListed, 0u) << "empty voxels in the list";
-    const glsl::OccupiedDispatch& dispatch = gpu.occupiedDispatch;
-    EXPECT_EQ(dispatch.groupsX, (dispatch.count + glsl::OCCUPIED_GROUP_SIZE - 1) / glsl::OCCUPIED_GROUP_SIZE);
+    const glsl::WorkListHeader& dispatch = gpu.occupiedDispatch;
+    EXPECT_EQ(dispatch.groupsX, (dispatch.count + glsl::WORK_LIST_GROUP_SIZE - 1) / glsl::WORK_LIST_GROUP_SIZE);
     EXPECT_EQ(dispatch.groupsY, 1u);
     EXPECT_EQ(dispatch.groupsZ, 1u);
 }
