@@ -16,7 +16,7 @@ layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
 layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
-// The reduced diffuse cones' result per sample, when frame.diffuseDownscale > 1.
+// The reduced diffuse cones' result per sample, where TRACES_DIFFUSE_CONES is false.
 layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
 
 #include "cone_tracing.glsl"
@@ -25,6 +25,13 @@ layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
 #include "direct_light.glsl"
 
 layout(location = 0) out vec4 outRadiance;
+
+// What this pipeline can run (ShadePass builds one per combination a frame asks for). Code that a
+// frame skips still costs lavapipe: every inlined cone loop widens the SIMD fragment program, and
+// the still frame of a 1280×720 image took 340 ms with all of it against 115 ms with none.
+layout(constant_id = 0) const bool WITH_DEBUG_VIEWS = true;
+layout(constant_id = 1) const bool TRACES_DIFFUSE_CONES = true;  // false: reads reducedDiffuse
+layout(constant_id = 2) const bool TRACES_SPECULAR_CONE = true;
 
 // Indirect light gathered by cones, split like the direct light into diffuse and specular parts.
 // The split of reflected energy between the two lobes uses the GGX directional albedo.
@@ -42,13 +49,13 @@ vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
 
     vec3 radiance = vec3(0.0f);
     if (wantDiffuse || wantAmbient) {
-        vec4 gathered = frame.diffuseDownscale > 1u ? texelFetch(reducedDiffuse, pixel, 0)
-                                                    : gatherDiffuse(surface.position, surface.normal);
+        vec4 gathered = TRACES_DIFFUSE_CONES ? gatherDiffuse(surface.position, surface.normal)
+                                             : texelFetch(reducedDiffuse, pixel, 0);
         if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
         if (wantAmbient) radiance += frame.ambientFactor * diffuseAlbedo * (1.0f - gathered.a);
     }
     // Skip the specular cone where the material reflects (almost) nothing specularly.
-    if (wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
+    if (TRACES_SPECULAR_CONE && wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
         // Like the diffuse cones, it starts a little off the surface, clear of its own voxels.
         vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
         vec3 reflected = reflect(-surface.toViewer, surface.normal);
@@ -62,7 +69,7 @@ vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 positionMaterial = texelFetch(gPosition, pixel, 0);
-    if (frame.debugView != DEBUG_NONE) {
+    if (WITH_DEBUG_VIEWS && frame.debugView != DEBUG_NONE) {
         outRadiance = vec4(debugView(pixel, positionMaterial), 1.0f);
         return;
     }

@@ -121,9 +121,12 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
     };
     addStage(VK_SHADER_STAGE_VERTEX_BIT, code[0]);
     if (code.size() > 1) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, code[1]);
-    const VkSpecializationMapEntry entry{0, 0, sizeof(uint32_t)};
-    const VkSpecializationInfo specialization{1, &entry, sizeof(uint32_t), &desc.specializationTextureCount};
-    if (desc.specializationTextureCount > 0 && stages.size() > 1) stages[1].pSpecializationInfo = &specialization;
+    std::vector<VkSpecializationMapEntry> entries;
+    for (uint32_t id = 0; id < desc.fragmentSpecialization.size(); ++id)
+        entries.push_back({id, id * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
+    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
+                                              entries.size() * sizeof(uint32_t), desc.fragmentSpecialization.data()};
+    if (!entries.empty() && stages.size() > 1) stages[1].pSpecializationInfo = &specialization;
 
     // Vertices are pulled from storage buffers by gl_VertexIndex: no vertex input state.
     VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};

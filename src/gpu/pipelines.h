@@ -44,8 +44,9 @@ struct GraphicsPipelineDesc {
     bool depthTest = false;
     bool depthBias = false;  // slope-scaled bias set dynamically (shadow maps)
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
-    // Value of the fragment shader's specialization constant 0 (the G-buffer's texture count); 0 = none.
-    uint32_t specializationTextureCount = 0;
+    // The fragment shader's specialization constants: element i is constant_id i (a uint, or a
+    // bool as VkBool32); empty leaves the shader's defaults.
+    std::vector<uint32_t> fragmentSpecialization;
 };
 
 // Collects descriptor writes for one vkCmdPushDescriptorSetKHR call.

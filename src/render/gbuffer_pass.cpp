@@ -29,7 +29,7 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     desc.depthFormat = VK_FORMAT_D32_SFLOAT;
     desc.depthTest = true;
     // The texture array's size is a specialization constant, so the pipeline is built per scene.
-    desc.specializationTextureCount = scene.textureCount();
+    if (scene.textureCount() > 0) desc.fragmentSpecialization = {scene.textureCount()};
     pipeline = createGraphicsPipeline(context, desc, {scene.textureSetLayout});
 }
 

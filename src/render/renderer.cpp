@@ -77,6 +77,9 @@ void Renderer::setGeometry(const Scene& scene) {
     sceneBounds_ = local.bounds();
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     brightestEmission_ = 0.0f;
+    anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
+        return material.metallic > 0.0f || material.specularWeight > 0.0f;
+    });
     for (const Material& material : scene.materials)
         brightestEmission_ =
             std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
@@ -175,9 +178,7 @@ void Renderer::writeFrameConstants() {
     constants.diffuseConeCount = shading.diffuseConeCount;
     constants.skipEmptySpace = shading.skipEmptySpace ? 1u : 0u;
     constants.debugVoxelMip = shading.debugVoxelMip;
-    // The shader upsamples only what the frame plan gathered.
-    constants.diffuseDownscale =
-        settings_.image.diffuseDownscale > 1 && needsDiffuseCones(shading) ? settings_.image.diffuseDownscale : 1u;
+    constants.diffuseDownscale = settings_.image.diffuseDownscale;
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
 }
 
@@ -257,9 +258,18 @@ FrameStats Renderer::renderFrame() {
         run(commands, Pass::DiffuseCones,
             [&] { diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_); });
         run(commands, Pass::Shade, [&] {
-            const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightsBuffer_.buffer,
+            const bool reducedDiffuse = plan.runs(Pass::DiffuseCones);
+            const ShadeVariant variant{
+                .debugViews = settings_.shading.debugView != DebugView::None,
+                .tracesDiffuseCones = !reducedDiffuse,
+                .tracesSpecularCone = anySpecularMaterial_ && effectiveComponents(settings_.shading).indirectSpecular,
+            };
+            const ShadeInputs inputs{frameConstants_.buffer,
+                                     sceneGpu_->materials.buffer,
+                                     lightsBuffer_.buffer,
                                      shadowViewsBuffer_.buffer,
-                                     plan.runs(Pass::DiffuseCones) ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE};
+                                     reducedDiffuse ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE,
+                                     variant};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });

@@ -95,6 +95,7 @@ private:
     std::vector<Light> lights_;
     StaleInputs stale_;
     float brightestEmission_ = 0.0f;
+    bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter
     float radianceScale_ = 1.0f;
     glsl::VoxelGridParams grid_;
 

@@ -13,12 +13,18 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
     desc.debugName = "radiance";
     radiance = GpuImage(context, desc);
     pointSampler = Sampler(context, nearestClampSampler());
+}
 
-    GraphicsPipelineDesc pipelineDesc;
-    pipelineDesc.vertexShader = "fullscreen.vert";
-    pipelineDesc.fragmentShader = "shade.frag";
-    pipelineDesc.colorFormats = {desc.format};
-    pipeline = createGraphicsPipeline(context, pipelineDesc);
+const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
+    Pipeline& slot = pipelines_[variant.index()];
+    if (slot.pipeline != VK_NULL_HANDLE) return slot;
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = "fullscreen.vert";
+    desc.fragmentShader = "shade.frag";
+    desc.colorFormats = {radiance.desc.format};
+    desc.fragmentSpecialization = {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone};
+    slot = createGraphicsPipeline(context_, desc);
+    return slot;
 }
 
 void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
@@ -27,7 +33,8 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     drawFullScreen(commands, radiance.view, width, height, [&] {
-        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+        const Pipeline& variant = pipeline(inputs.variant);
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.pipeline);
         const VkSampler volumeSampler = volumes.sampler.sampler;
         // Without reduced diffuse cones the shader never samples binding 13: the base colour stands in.
         const VkImageView reducedDiffuse = inputs.reducedDiffuse ? inputs.reducedDiffuse : gbuffer.baseColor.view;
@@ -46,7 +53,7 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(13, reducedDiffuse, pointSampler.sampler)
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.layout);
     });
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,

@@ -2,6 +2,8 @@
 // of the G-buffer, into an HDR radiance target in the scene's units.
 #pragma once
 
+#include <array>
+
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/gbuffer_pass.h"
@@ -10,12 +12,24 @@
 
 namespace vct {
 
+// What the shading pipeline has to be able to do this frame (its specialization constants):
+// each combination is its own pipeline, since code a frame skips still slows lavapipe down.
+struct ShadeVariant {
+    bool debugViews = false;
+    bool tracesDiffuseCones = true;   // false: reads ShadeInputs::reducedDiffuse instead
+    bool tracesSpecularCone = false;  // some material reflects specularly and the component is on
+    uint32_t index() const {
+        return (debugViews ? 1u : 0u) | (tracesDiffuseCones ? 2u : 0u) | (tracesSpecularCone ? 4u : 0u);
+    }
+};
+
 struct ShadeInputs {
     VkBuffer frameConstants;
     VkBuffer materials;
     VkBuffer lights;
     VkBuffer shadowViews;
     VkImageView reducedDiffuse = VK_NULL_HANDLE;  // DiffuseConesPass::diffuse, when the cones run reduced
+    ShadeVariant variant;
 };
 
 struct ShadePass {
@@ -28,9 +42,11 @@ struct ShadePass {
     uint32_t width, height;
     GpuImage radiance;  // RGBA32F
     Sampler pointSampler;
-    Pipeline pipeline;
 
 private:
+    // Built the first time a frame asks for its variant.
+    const Pipeline& pipeline(const ShadeVariant& variant);
+    std::array<Pipeline, 8> pipelines_;
     GpuContext& context_;
 };
 

@@ -111,6 +111,34 @@ TEST_F(Frame, RemovedGeometryLeavesNoLightBehind) {
     EXPECT_EQ(std::memcmp(after.rgb.data(), expected.rgb.data(), bytes), 0) << "light was left where the block stood";
 }
 
+TEST_F(Frame, ShadingPipelinesFollowWhatTheFrameShows) {
+    // The shading pass has one pipeline per variant (debug views, diffuse cones traced or read,
+    // specular cone): switching between them changes what they should and nothing else.
+    const Scene metal = loadScene("cornell-metal");  // its gold sphere needs the specular cone
+    RenderSettings settings = smallSettings();
+    settings.shading.mode = RenderMode::Indirect;
+    Renderer renderer(gpu(), metal, settings);
+    renderer.renderFrame();
+    const Image lit = renderer.readImage();
+    const auto same = [](const Image& a, const Image& b) {
+        return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * 4) == 0;
+    };
+    ShadingSettings shading = settings.shading;
+    shading.components.indirectSpecular = false;
+    renderer.setShading(shading);
+    renderer.renderFrame();
+    EXPECT_FALSE(same(renderer.readImage(), lit)) << "the sphere reflected nothing";
+    shading.components.indirectSpecular = true;
+    shading.debugView = DebugView::Normal;
+    renderer.setShading(shading);
+    renderer.renderFrame();
+    EXPECT_FALSE(same(renderer.readImage(), lit)) << "the debug view showed the lit image";
+    shading.debugView = DebugView::None;
+    renderer.setShading(shading);
+    renderer.renderFrame();
+    EXPECT_TRUE(same(renderer.readImage(), lit)) << "back from the debug view, the lit image changed";
+}
+
 TEST_F(Frame, DirectLightNeedsNoVoxels) {
     RenderSettings settings = smallSettings();
     settings.shading.mode = RenderMode::Direct;
