@@ -42,7 +42,7 @@ spp_for() {
 }
 
 scenes=("$@")
-[[ ${#scenes[@]} -gt 0 ]] || scenes=(cornell cornell-emissive cornell-metal sun-room terrain)
+[[ ${#scenes[@]} -gt 0 ]] || scenes=(cornell cornell-emissive cornell-metal cornell-sun sun-room terrain)
 mkdir -p "$out"
 for scene in "${scenes[@]}"; do
     for mode in direct indirect; do

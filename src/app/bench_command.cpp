@@ -1,7 +1,8 @@
 // vct bench: error against the path-traced references and GPU time, over a matrix of settings.
 // Writes bench.csv, bench.json and bench.svg (error against time, Pareto front, presets) into
 // --out-dir, and prints a table with one line per setting; then measures the common VCT failure
-// modes (leaking, drift with resolution, flicker) into failure_modes.json. See README, "Benchmark".
+// modes (leaking, drift with resolution, flicker) into failure_modes.json, and the side-by-side
+// with an OpenGL VCT (bench/comparison.h) into comparison.json. See README, "Benchmark".
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "app/scene_setup.h"
+#include "bench/comparison.h"
 #include "bench/failure_report.h"
 #include "bench/matrix.h"
 #include "bench/measure.h"
@@ -30,6 +32,8 @@ std::vector<Option> benchOptions() {
         {"preset", "NAME", "measure just that preset (fast, balanced, quality)"},
         {"quick", "", "two cheap settings, for tests (no failure modes)"},
         {"no-failure-modes", "", "skip the leak, resolution-drift and flicker measurements"},
+        {"comparison", "", "measure only the side-by-side with an OpenGL VCT (1280x720 cornell-sun)"},
+        {"no-comparison", "", "skip that side-by-side"},
         {"frames", "N", "measured frames per setting; medians are reported (default 3)"},
         {"warmup", "N", "frames before measuring (default 1)"},
         {"reference-dir", "DIR", "SCENE-direct.pfm and SCENE-indirect.pfm (default assets/reference)"},
@@ -90,6 +94,21 @@ int runBench(const std::vector<std::string>& rawArguments) {
     info.height = imageSettings.image.height;
     info.frames = options.frames;
     info.warmupFrames = options.warmupFrames;
+    const auto measureComparison = [&] {
+        const std::optional<bench::References> references =
+            bench::loadReferences(referenceDir, "cornell-sun", imageSettings.image.width, imageSettings.image.height);
+        const bench::ComparisonReport report =
+            bench::measureComparison(context, references ? &*references : nullptr, imageSettings.image.width,
+                                     imageSettings.image.height, options);
+        writeFileAtomically(outDir + "/comparison.json", bench::comparisonJson(report));
+        std::printf("\n%swrote %s/comparison.json\n", bench::comparisonText(report).c_str(), outDir.c_str());
+    };
+    if (arguments.has("comparison")) {
+        measureComparison();
+        if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
+        return 0;
+    }
+
     std::printf("vct bench: %zu settings × %zu scenes at %ux%u on %s\n", matrix.size(), scenes.size(),
                 imageSettings.image.width, imageSettings.image.height, info.device.c_str());
 
@@ -151,6 +170,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
                 throw Error("the failure-mode run gave non-finite pixels at " + std::to_string(r.voxelResolution) +
                             "³ voxels");
     }
+    if (!arguments.has("quick") && !arguments.has("preset") && !arguments.has("scenes") &&
+        !arguments.has("no-comparison"))
+        measureComparison();
     for (const bench::Measurement& m : measurements)
         if (!m.imagesFinite)
             throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");

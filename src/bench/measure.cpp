@@ -23,6 +23,24 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
+bool finite(const Image& image) {
+    return std::all_of(image.rgb.begin(), image.rgb.end(), [](float v) { return std::isfinite(v); });
+}
+
+// A number from a flat JSON object such as the path tracer's sidecar; −1 when it is not there.
+double jsonNumber(const std::string& path, const std::string& key) {
+    std::ifstream file(path);
+    if (!file) return -1.0;
+    std::stringstream text;
+    text << file.rdbuf();
+    std::smatch match;
+    const std::string content = text.str();
+    if (!std::regex_search(content, match, std::regex("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)"))) return -1.0;
+    return std::stod(match[1].str());
+}
+
+}  // namespace
+
 FrameTiming medianTiming(const std::vector<FrameStats>& frames) {
     FrameTiming timing;
     std::vector<double> gpu, cpu;
@@ -41,24 +59,6 @@ FrameTiming medianTiming(const std::vector<FrameStats>& frames) {
     for (const std::string& name : order) timing.passes.push_back({name, median(perPass[name])});
     return timing;
 }
-
-bool finite(const Image& image) {
-    return std::all_of(image.rgb.begin(), image.rgb.end(), [](float v) { return std::isfinite(v); });
-}
-
-// A number from a flat JSON object such as the path tracer's sidecar; −1 when it is not there.
-double jsonNumber(const std::string& path, const std::string& key) {
-    std::ifstream file(path);
-    if (!file) return -1.0;
-    std::stringstream text;
-    text << file.rdbuf();
-    std::smatch match;
-    const std::string content = text.str();
-    if (!std::regex_search(content, match, std::regex("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)"))) return -1.0;
-    return std::stod(match[1].str());
-}
-
-}  // namespace
 
 std::optional<References> loadReferences(const std::string& directory, const std::string& scene, uint32_t width,
                                          uint32_t height) {

@@ -24,6 +24,7 @@
 #include "gpu/context.h"
 #include "gpu/timing.h"
 #include "io/image_io.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace vct::bench {
@@ -46,6 +47,9 @@ struct FrameTiming {
     double cpuMilliseconds = 0.0;  // median wall time of renderFrame (record, submit, wait)
     std::vector<PassTime> passes;  // median of each pass that ran
 };
+
+// The median over `frames` of the GPU time, the wall time and each pass.
+FrameTiming medianTiming(const std::vector<FrameStats>& frames);
 
 struct ModeErrors {
     ImageError full, direct, indirect;

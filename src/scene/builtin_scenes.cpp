@@ -9,7 +9,8 @@
 //
 // Beside it, the scenes `vct bench` measures (see README, "Benchmark"): `sun-room` (a closed room
 // lit by the sun through a hole in its roof, so most of what the camera sees is indirect light),
-// `cornell-metal` (a glossy gold sphere for the specular cone), and `terrain` (a procedural
+// `cornell-metal` (a glossy gold sphere for the specular cone), `cornell-sun` (the box without its
+// ceiling, lit by a sun: the scene of issue 13's comparison with an OpenGL VCT), and `terrain` (a procedural
 // height field with spheres, about 60 000 triangles, for timing).
 #include <algorithm>
 #include <array>
@@ -129,21 +130,23 @@ Camera cameraLookingAt(const std::string& name, glm::vec3 position, glm::vec3 ta
     return camera;
 }
 
-enum class CornellLight { PointUnderCeiling, EmissiveCeilingPatch, PointWithMetalSphere };
+enum class CornellLight { PointUnderCeiling, EmissiveCeilingPatch, PointWithMetalSphere, SunThroughOpenTop };
 
 Scene makeCornellBox(CornellLight lightKind) {
     SceneBuilder builder;
     builder.scene.name = lightKind == CornellLight::PointUnderCeiling      ? "cornell"
                          : lightKind == CornellLight::EmissiveCeilingPatch ? "cornell-emissive"
-                                                                           : "cornell-metal";
+                         : lightKind == CornellLight::PointWithMetalSphere ? "cornell-metal"
+                                                                           : "cornell-sun";
     const uint32_t white = builder.addMaterial("white", {0.725f, 0.71f, 0.68f});
     const uint32_t red = builder.addMaterial("red", {0.63f, 0.065f, 0.05f});
     const uint32_t green = builder.addMaterial("green", {0.14f, 0.45f, 0.091f});
     const glm::vec3 inside(278.0f, 274.4f, 279.6f);
 
     builder.addQuad({{{552.8f, 0, 0}, {0, 0, 0}, {0, 0, 559.2f}, {549.6f, 0, 559.2f}}}, inside, white);  // floor
-    builder.addQuad({{{556, 548.8f, 0}, {556, 548.8f, 559.2f}, {0, 548.8f, 559.2f}, {0, 548.8f, 0}}}, inside,
-                    white);  // ceiling
+    if (lightKind != CornellLight::SunThroughOpenTop)
+        builder.addQuad({{{556, 548.8f, 0}, {556, 548.8f, 559.2f}, {0, 548.8f, 559.2f}, {0, 548.8f, 0}}}, inside,
+                        white);  // ceiling
     builder.addQuad({{{549.6f, 0, 559.2f}, {0, 0, 559.2f}, {0, 548.8f, 559.2f}, {556, 548.8f, 559.2f}}}, inside,
                     white);                                                                              // back wall
     builder.addQuad({{{0, 0, 559.2f}, {0, 0, 0}, {0, 548.8f, 0}, {0, 548.8f, 559.2f}}}, inside, green);  // right
@@ -165,7 +168,17 @@ Scene makeCornellBox(CornellLight lightKind) {
 
     // The published light patch spans x 213–343, z 227–332 at y 548.8.
     const glm::vec3 patchCenter = glm::vec3(278.0f, 548.8f, 279.5f) * kMillimetre;
-    if (lightKind != CornellLight::EmissiveCeilingPatch) {
+    if (lightKind == CornellLight::SunThroughOpenTop) {
+        // The open-top box lit by a sun, as the OpenGL implementation issue 13 compares against
+        // draws it: the sun falls on the floor, the blocks and the red wall, and the rest of the
+        // room is lit by what they reflect.
+        Light sun;
+        sun.name = "sun";
+        sun.type = LightType::Directional;
+        sun.intensity = 5.0f;
+        sun.direction = glm::normalize(glm::vec3(0.45f, -1.0f, 0.3f));
+        builder.scene.lights.push_back(sun);
+    } else if (lightKind != CornellLight::EmissiveCeilingPatch) {
         Light light;
         light.name = "ceiling point light";
         light.type = LightType::Point;
@@ -280,13 +293,14 @@ Scene makeTerrain() {
 }  // namespace
 
 std::vector<std::string> builtinSceneNames() {
-    return {"cornell", "cornell-emissive", "cornell-metal", "sun-room", "terrain"};
+    return {"cornell", "cornell-emissive", "cornell-metal", "cornell-sun", "sun-room", "terrain"};
 }
 
 Scene loadScene(const std::string& nameOrPath, const LoadOptions& options) {
     if (nameOrPath == "cornell") return makeCornellBox(CornellLight::PointUnderCeiling);
     if (nameOrPath == "cornell-emissive") return makeCornellBox(CornellLight::EmissiveCeilingPatch);
     if (nameOrPath == "cornell-metal") return makeCornellBox(CornellLight::PointWithMetalSphere);
+    if (nameOrPath == "cornell-sun") return makeCornellBox(CornellLight::SunThroughOpenTop);
     if (nameOrPath == "sun-room") return makeSunRoom();
     if (nameOrPath == "terrain") return makeTerrain();
     return loadGltf(nameOrPath, options);
