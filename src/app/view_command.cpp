@@ -7,6 +7,7 @@
 #include "app/options.h"
 #include "app/scene_setup.h"
 #include "error.h"
+#include "render/presets.h"
 
 #ifdef VCT_WITH_VIEWER
 #include "view/viewer.h"
@@ -50,6 +51,19 @@ static RenderSettings viewDefaults() {
     return settings;
 }
 
+// What the window, not the preset, decides: the image's size and sampling, and the sun's shadow
+// map unless asked for; and one bounce per frame, so a moving light never waits for, or resets,
+// the converged light.
+static RenderSettings forTheWindow(RenderSettings settings, const Arguments& arguments) {
+    const RenderSettings defaults = viewDefaults();
+    if (!arguments.has("width")) settings.image.width = defaults.image.width;
+    if (!arguments.has("height")) settings.image.height = defaults.image.height;
+    if (!arguments.has("supersample")) settings.image.supersample = defaults.image.supersample;
+    if (!arguments.has("shadow-map")) settings.resources.sunShadowMapSize = defaults.resources.sunShadowMapSize;
+    settings.shading.progressiveBounces = true;
+    return settings;
+}
+
 static std::string readTextFile(const std::string& path) {
     std::ifstream file(path);
     if (!file) throw Error("cannot read the script '" + path + "'");
@@ -67,15 +81,11 @@ int runView(const std::vector<std::string>& rawArguments) {
         return 0;
     }
     ViewerOptions options;
-    options.settings = renderSettingsFromArguments(arguments, rows, viewDefaults());
-    // A preset sets every setting; the window still decides the image's size and sampling.
-    const RenderSettings defaults = viewDefaults();
-    if (!arguments.has("width")) options.settings.image.width = defaults.image.width;
-    if (!arguments.has("height")) options.settings.image.height = defaults.image.height;
-    if (!arguments.has("supersample")) options.settings.image.supersample = defaults.image.supersample;
-    if (!arguments.has("shadow-map")) options.settings.resources.sunShadowMapSize = defaults.resources.sunShadowMapSize;
-    // One bounce per frame: a moving light never waits for, or resets, the converged light.
-    options.settings.shading.progressiveBounces = true;
+    options.settings = forTheWindow(renderSettingsFromArguments(arguments, rows, viewDefaults()), arguments);
+    // Without a preset, a software rasterizer starts on `fast`, with the other options over it.
+    if (!arguments.has("preset"))
+        options.softwareSettings =
+            forTheWindow(renderSettingsFromArguments(arguments, rows, *findRenderPreset("fast")), arguments);
     options.exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
     options.vsync = !arguments.has("no-vsync");
     options.showGuide = !arguments.has("no-guide");

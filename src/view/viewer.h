@@ -1,6 +1,8 @@
 // vct view: a window showing the renderer's image live, with camera, sun and settings controls.
 #pragma once
 
+#include <optional>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,6 +18,9 @@ struct ViewerOptions {
     Scene scene;
     std::string sceneName;
     RenderSettings settings;  // width and height: the window's initial size
+    // Used instead of `settings` on a software rasterizer, where those would not be interactive
+    // (none: `settings` everywhere).
+    std::optional<RenderSettings> softwareSettings;
     ContextOptions context;
     double gpuTimeoutSeconds = 120.0;
     float exposure = 1.0f;
