@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "error.h"
 #include "io/image_io.h"
@@ -78,6 +79,25 @@ TEST(ImageIo, TruncatedPfmIsRefused) {
     }
     EXPECT_THROW(vct::readPfm(path), vct::Error);
     std::remove(path.c_str());
+}
+
+TEST(ImageIo, ImageWithNonFiniteValuesIsRefusedAndNothingIsWritten) {
+    for (const char* name : {"non-finite.pfm", "non-finite.png"}) {
+        const std::string path = temporaryPath(name);
+        std::filesystem::remove(path);
+        vct::Image image = twoByTwo();
+        image.rgb[4] = std::numeric_limits<float>::quiet_NaN();
+        image.rgb[7] = std::numeric_limits<float>::infinity();
+        try {
+            vct::writeImage(path, image);
+            ADD_FAILURE() << name << " was written";
+        } catch (const vct::Error& error) {
+            EXPECT_NE(std::string(error.what()).find("the image holds 2 values that are not finite numbers"),
+                      std::string::npos)
+                << error.what();
+        }
+        EXPECT_FALSE(std::filesystem::exists(path)) << name;
+    }
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "error.h"
 #include "render/camera.h"
 #include "render/presets.h"
+#include "render/renderer_limits.h"
 #include "scene/load.h"
 
 namespace vct {
@@ -125,7 +126,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
     std::vector<bench::Measurement> measurements;
     std::optional<bench::References> cornellReferences;
     for (const std::string& name : scenes) {
-        Scene scene = loadScene(name);
+        LoadOptions loadOptions;
+        loadOptions.bufferLimits = sceneBufferLimits(context);
+        Scene scene = loadScene(name, loadOptions);
         for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
         if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
         const std::optional<bench::References> references = bench::loadReferences(

@@ -7,6 +7,7 @@
 #include "app/scene_setup.h"
 #include "error.h"
 #include "render/renderer.h"
+#include "render/renderer_limits.h"
 
 namespace vct {
 
@@ -34,10 +35,11 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const float exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
     const uint32_t frames = arguments.unsignedInt("frames", 1, 1, 100000);
 
-    const Scene scene = loadSceneFromArguments(arguments);
     const RenderSettings settings = renderSettingsFromArguments(arguments, options);
+    // The device first: the scene is checked against its buffer limits while it loads.
     GpuContext context(contextOptionsFromArguments(arguments));
     context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
+    const Scene scene = loadSceneFromArguments(arguments, sceneBufferLimits(context));
     std::printf("scene %s: %zu triangles, %zu lights, on %s\n", scene.name.c_str(), scene.triangleCount(),
                 scene.lights.size(), context.deviceName().c_str());
 

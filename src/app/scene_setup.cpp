@@ -9,8 +9,9 @@
 
 namespace vct {
 
-Scene loadSceneFromArguments(const Arguments& arguments) {
+Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits& limits) {
     LoadOptions options;
+    options.bufferLimits = limits;
     options.strict = arguments.has("strict");
     options.allowedRoot = arguments.text("allowed-root", "");
     Scene scene = loadScene(arguments.text("scene", "cornell"), options);

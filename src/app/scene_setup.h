@@ -8,10 +8,13 @@
 #include "gpu/context.h"
 #include "render/settings.h"
 #include "scene/scene.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 
-Scene loadSceneFromArguments(const Arguments& arguments);
+// --scene with --strict and --allowed-root; a file naming more geometry than `limits` allow is
+// refused before it is read.
+Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits& limits = {});
 ContextOptions contextOptionsFromArguments(const Arguments& arguments);
 
 // --camera-pos/--camera-target/--fov and --light-dir/--light-intensity applied to the scene.

@@ -85,6 +85,11 @@ void writePng(const std::string& path, const Image& image, float exposure) {
 }
 
 void writeImage(const std::string& path, const Image& image, float exposure) {
+    const size_t nonFinite =
+        size_t(std::count_if(image.rgb.begin(), image.rgb.end(), [](float value) { return !std::isfinite(value); }));
+    if (nonFinite > 0)
+        throw Error("not writing '" + path + "': the image holds " + std::to_string(nonFinite) +
+                    " values that are not finite numbers (NaN or infinity)");
     auto endsWith = [&](const char* suffix) {
         const size_t n = std::strlen(suffix);
         return path.size() >= n && std::equal(path.end() - long(n), path.end(), suffix,

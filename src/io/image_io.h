@@ -27,7 +27,8 @@ Image readPfm(const std::string& path);
 // Writes an 8-bit sRGB PNG: radiance × exposure, ACES-fitted tone curve, sRGB encoding.
 void writePng(const std::string& path, const Image& image, float exposure = 1.0f);
 
-// Writes PFM or PNG depending on the extension; throws vct::Error for anything else.
+// Writes PFM or PNG depending on the extension; throws vct::Error for anything else, and, writing
+// nothing, for an image holding NaN or infinity (a render gone wrong must not pass for an image).
 void writeImage(const std::string& path, const Image& image, float exposure = 1.0f);
 
 // Writes `bytes` to `path` through a temporary file and an atomic rename.

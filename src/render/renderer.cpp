@@ -68,6 +68,7 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
 void Renderer::setGeometry(const Scene& scene) {
     if (sceneGpu_) vkDeviceWaitIdle(context_.device);
     checkSceneCanBeRendered(scene);
+    sceneName_ = scene.name;
     // The GPU works in a frame centred on the scene: far from the origin a float's step is too
     // coarse for view and shadow matrices built from world positions (at +1e4 m it is 1 mm, and
     // shadows there changed 9 % of the Cornell box's pixels). Centring is exact (Sterbenz).
@@ -104,7 +105,7 @@ void Renderer::resize(const ImageSettings& image) {
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
-    checkLightsCanBeRendered(lights);
+    checkLightsCanBeRendered(lights, sceneName_);
     lights_ = lights;
     std::vector<Light> local = lights;
     for (Light& light : local) light.position -= sceneOrigin_;

@@ -89,6 +89,7 @@ private:
 
     GpuContext& context_;
     RenderSettings settings_;
+    std::string sceneName_;  // for messages
     glm::vec3 sceneOrigin_{0.0f};
     Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
     Camera camera_;

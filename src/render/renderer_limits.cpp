@@ -9,6 +9,7 @@
 #include "render/voxel_grid_fit.h"
 #include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 namespace {
@@ -17,14 +18,6 @@ namespace {
 constexpr uint64_t kShadowTexel = 4;                    // D32
 constexpr uint64_t kSampleBytes = 16 + 8 + 8 + 4 + 16;  // G-buffer position, normal, base colour, depth; shade
 constexpr uint64_t kResolvedPixel = 16;                 // RGBA32F
-
-std::string bytesText(uint64_t bytes) {
-    char text[32];
-    if (bytes >= (uint64_t(1) << 20)) std::snprintf(text, sizeof text, "%.0f MiB", double(bytes) / double(1 << 20));
-    else if (bytes >= 1024) std::snprintf(text, sizeof text, "%.0f KiB", double(bytes) / 1024.0);
-    else std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
-    return text;
-}
 
 uint64_t largestDeviceLocalHeap(const VkPhysicalDeviceMemoryProperties& memory) {
     uint64_t bytes = 0;
@@ -120,15 +113,10 @@ void checkSceneBuffers(const VkPhysicalDeviceLimits& limits, const std::string& 
                    {scene.indices.size(), sizeof(uint32_t), "triangle corners (indices)"},
                    {scene.triangleMaterials.size(), sizeof(uint32_t), "triangle materials"},
                    {scene.materials.size(), sizeof(glsl::GpuMaterial), "materials"}};
-    for (const auto& buffer : buffers) {
-        const uint64_t bytes = buffer.count * buffer.elementBytes;
-        if (bytes <= range && buffer.count <= UINT32_MAX) continue;
-        throw Error("scene '" + scene.name + "': its " + std::to_string(buffer.count) + " " + buffer.what + " need " +
-                    bytesText(bytes) + " in one storage buffer, more than " + deviceName +
-                    "'s maxStorageBufferRange of " + bytesText(range) + "; at most " +
-                    std::to_string(std::min<uint64_t>(range / buffer.elementBytes, UINT32_MAX)) + " " + buffer.what +
-                    " fit");
-    }
+    const SceneBufferLimits deviceLimits{range, deviceName};
+    for (const auto& buffer : buffers)
+        checkSceneBufferFits("scene '" + scene.name + "': ", buffer.count, buffer.elementBytes, buffer.what,
+                             deviceLimits);
     for (size_t i = 0; i < scene.textures.size(); ++i) {
         const Texture& texture = scene.textures[i];
         if (texture.width > limits.maxImageDimension2D || texture.height > limits.maxImageDimension2D)

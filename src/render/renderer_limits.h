@@ -15,6 +15,7 @@
 #include "gpu/context.h"
 #include "render/settings.h"
 #include "scene/scene.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 
@@ -33,6 +34,11 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
 // of `memory`. The limits are parameters so tests can pretend to be a smaller device.
 void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceMemoryProperties& memory,
                          const std::string& deviceName, const Scene& scene, const RenderSettings& settings);
+
+// The storage-buffer limit a scene is loaded against (scene_limits.h).
+inline SceneBufferLimits sceneBufferLimits(const GpuContext& context) {
+    return {context.properties.limits.maxStorageBufferRange, context.deviceName()};
+}
 
 inline void checkRendererLimits(const GpuContext& context, const Scene& scene, const RenderSettings& settings) {
     checkRendererLimits(context.properties.limits, context.memoryProperties, context.deviceName(), scene, settings);

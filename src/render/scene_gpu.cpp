@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <string>
@@ -10,6 +11,7 @@
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "gpu_types.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 namespace {
@@ -84,16 +86,25 @@ void checkSceneCanBeRendered(const Scene& scene) {
     }
 }
 
-void checkLightsCanBeRendered(const std::vector<Light>& lights) {
+void checkLightsCanBeRendered(const std::vector<Light>& lights, const std::string& sceneName) {
     for (size_t i = 0; i < lights.size(); ++i) {
         const Light& light = lights[i];
-        const std::string name = "light " + std::to_string(i) + " ('" + light.name + "')";
+        const std::string name = "scene '" + sceneName + "': light " + std::to_string(i) + " ('" + light.name + "')";
         if (!finite(light.color) || !std::isfinite(light.intensity) || !finite(light.position) ||
             !finite(light.direction) || !std::isfinite(light.range) || !std::isfinite(light.innerConeAngle) ||
             !std::isfinite(light.outerConeAngle))
             throw Error(name + " holds a value that is not a finite number");
         if (light.intensity < 0.0f || light.color.r < 0.0f || light.color.g < 0.0f || light.color.b < 0.0f)
             throw Error(name + " has a negative intensity or colour");
+        const double brightest = double(light.intensity) * std::max({light.color.r, light.color.g, light.color.b});
+        if (brightest > kBrightestRepresentable) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          ": its intensity times its colour is %g, brighter than this renderer "
+                          "represents (%g)",
+                          brightest, kBrightestRepresentable);
+            throw Error(name + text);
+        }
     }
 }
 

@@ -15,7 +15,7 @@ namespace vct {
 // range. Throws vct::Error naming the scene (or light) and the element. Zero-length normals are
 // allowed: the G-buffer falls back to the triangle's plane.
 void checkSceneCanBeRendered(const Scene& scene);
-void checkLightsCanBeRendered(const std::vector<Light>& lights);
+void checkLightsCanBeRendered(const std::vector<Light>& lights, const std::string& sceneName);
 
 struct SceneGpu {
     SceneGpu(GpuContext& context, const Scene& scene);

@@ -157,6 +157,32 @@ std::string jsonText(const std::vector<uint8_t>& bytes, bool binary) {
     return std::string(bytes.begin() + 20, bytes.begin() + 20 + chunkLength);
 }
 
+// JSON nested deeper than this is refused before any parser sees it: tinygltf converts nested
+// values recursively, and about 20 000 levels (in `extras`, say) overflow the stack, where 10 000
+// still load. Real glTF files nest a few dozen levels.
+constexpr size_t kMaxJsonDepth = 1000;
+
+void checkJsonNesting(const std::string& text, const std::string& path) {
+    size_t depth = 0;
+    bool inString = false, escaped = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth)
+                throw Error(path + ": the JSON nests more than " + std::to_string(kMaxJsonDepth) +
+                            " levels deep (at byte " + std::to_string(i) + "), more than this loader accepts");
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+}
+
 // The member `key` of a JSON object, or null (a const operator[] on a missing key is undefined).
 const nlohmann::json* member(const nlohmann::json* object, const char* key) {
     if (!object || !object->is_object()) return nullptr;
@@ -242,7 +268,9 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     if (error) throw Error(path + ": the allowed folder '" + options.allowedRoot + "' " + error.message());
 
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    vetUris(jsonText(bytes, binary), sceneFolder, context);
+    const std::string json = jsonText(bytes, binary);
+    checkJsonNesting(json, path);
+    vetUris(json, sceneFolder, context);
 
     Parsed result;
     tinygltf::Model& model = result.model;
@@ -550,22 +578,10 @@ struct Converter {
         scene.lights.push_back(light);
     }
 
-    // The default scene's root nodes: `scene`, else scene 0, else every node without a parent.
-    std::vector<int> rootNodes() const {
-        if (!model.scenes.empty()) return model.scenes[size_t(std::max(model.defaultScene, 0))].nodes;
-        std::vector<char> isChild(model.nodes.size(), 0);
-        for (const tinygltf::Node& node : model.nodes)
-            for (int child : node.children) isChild[size_t(child)] = 1;
-        std::vector<int> roots;
-        for (size_t i = 0; i < model.nodes.size(); ++i)
-            if (!isChild[i]) roots.push_back(int(i));
-        return roots;
-    }
-
     // Depth-first, parents before children, iteratively (a hostile file may nest nodes very deeply).
     void convertNodes() {
         std::vector<std::pair<int, glm::dmat4>> pending;
-        const std::vector<int> roots = rootNodes();
+        const std::vector<int> roots = gltfRootNodes(model);
         for (auto root = roots.rbegin(); root != roots.rend(); ++root) pending.emplace_back(*root, glm::dmat4(1.0));
         while (!pending.empty()) {
             const auto [index, parentWorld] = pending.back();
@@ -589,7 +605,7 @@ struct Converter {
 
 Scene load(const std::string& path, const LoadOptions& options) {
     const Parsed parsed = parse(path, options);
-    validateGltf(parsed.model, path);
+    validateGltf(parsed.model, path, options.bufferLimits);
 
     Scene scene;
     scene.name = path;

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "error.h"
+#include "gpu_types.h"
 #include "scene/gltf_accessor.h"
 
 namespace vct {
@@ -254,28 +255,36 @@ struct Validator {
                 fail(path + ".attributes." + name,
                      "has " + std::to_string(model.accessors[size_t(accessorIndex)].count) + " elements but " +
                          reference->first + " has " + std::to_string(vertexCount));
+        for (size_t t = 0; t < primitive.targets.size(); ++t)
+            for (const auto& [name, accessorIndex] : primitive.targets[t])
+                checkReference(at(path + ".targets", t) + "." + name, accessorIndex, model.accessors.size(), "accessor",
+                               false);
+        if (primitive.indices != -1) {
+            checkReference(path + ".indices", primitive.indices, model.accessors.size(), "accessor", false);
+            const tinygltf::Accessor& accessor = model.accessors[size_t(primitive.indices)];
+            const int component = accessor.componentType;
+            if (accessor.type != TINYGLTF_TYPE_SCALAR || (component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                                          component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                                          component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+                fail(path + ".indices", "accessor " + std::to_string(primitive.indices) + " is " +
+                                            accessorTypeName(accessor.type) + " of " + componentTypeName(component) +
+                                            "; indices must be SCALAR unsigned integers");
+        }
+    }
+
+    // The values the loader reads: finite positions, normals and texture coordinates, and
+    // indices inside the vertex count. Read only once the geometry is known to fit.
+    void checkPrimitiveValues(const std::string& path, const tinygltf::Primitive& primitive) {
         for (const char* name : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
             const auto attribute = primitive.attributes.find(name);
             if (attribute != primitive.attributes.end())
                 checkFiniteValues(path + ".attributes." + name, attribute->second);
         }
-        for (size_t t = 0; t < primitive.targets.size(); ++t)
-            for (const auto& [name, accessorIndex] : primitive.targets[t])
-                checkReference(at(path + ".targets", t) + "." + name, accessorIndex, model.accessors.size(), "accessor",
-                               false);
-
+        const size_t vertexCount = model.accessors[size_t(primitive.attributes.begin()->second)].count;
         if (primitive.indices != -1) checkIndices(path + ".indices", primitive.indices, vertexCount);
     }
 
     void checkIndices(const std::string& path, int accessorIndex, size_t vertexCount) {
-        checkReference(path, accessorIndex, model.accessors.size(), "accessor", false);
-        const tinygltf::Accessor& accessor = model.accessors[size_t(accessorIndex)];
-        const int component = accessor.componentType;
-        if (accessor.type != TINYGLTF_TYPE_SCALAR ||
-            (component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-             component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail(path, "accessor " + std::to_string(accessorIndex) + " is " + accessorTypeName(accessor.type) + " of " +
-                           componentTypeName(component) + "; indices must be SCALAR unsigned integers");
         auto found = largestIndex.find(accessorIndex);
         if (found == largestIndex.end()) {
             const std::vector<uint32_t> indices = readIndices(path, accessorIndex);
@@ -290,6 +299,48 @@ struct Validator {
         for (size_t m = 0; m < model.meshes.size(); ++m)
             for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p)
                 checkPrimitive(at(at("meshes", m) + ".primitives", p), model.meshes[m].primitives[p]);
+    }
+
+    void checkMeshValues() {
+        for (size_t m = 0; m < model.meshes.size(); ++m)
+            for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p)
+                checkPrimitiveValues(at(at("meshes", m) + ".primitives", p), model.meshes[m].primitives[p]);
+    }
+
+    // The vertices and indices the loader would build, from the accessors' counts alone, checked
+    // against the buffer limits before anything is read: a file of a few hundred bytes can name
+    // 2²⁸ vertices, and reading them would take about 86 bytes each.
+    void checkGeometryFits(const SceneBufferLimits& limits) const {
+        uint64_t vertices = 0, indices = 0;
+        const auto add = [](uint64_t& total, uint64_t more) {
+            total = more > UINT64_MAX - total ? UINT64_MAX : total + more;
+        };
+        std::vector<int> pending = gltfRootNodes(model);
+        while (!pending.empty()) {
+            const tinygltf::Node& node = model.nodes[size_t(pending.back())];
+            pending.pop_back();
+            pending.insert(pending.end(), node.children.begin(), node.children.end());
+            if (node.mesh < 0) continue;
+            for (const tinygltf::Primitive& primitive : model.meshes[size_t(node.mesh)].primitives) {
+                const auto position = primitive.attributes.find("POSITION");
+                const int mode = primitive.mode;
+                if (position == primitive.attributes.end() ||
+                    (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+                     mode != TINYGLTF_MODE_TRIANGLE_FAN))
+                    continue;  // skipped by the loader
+                const uint64_t positions = model.accessors[size_t(position->second)].count;
+                const uint64_t corners =
+                    primitive.indices >= 0 ? uint64_t(model.accessors[size_t(primitive.indices)].count) : positions;
+                const uint64_t triangles = mode == -1 || mode == TINYGLTF_MODE_TRIANGLES ? corners / 3
+                                           : corners >= 2                                ? corners - 2
+                                                                                         : 0;
+                // Without normals every triangle gets three vertices of its own (flat shading).
+                add(vertices, primitive.attributes.count("NORMAL") ? positions : 3 * triangles);
+                add(indices, 3 * triangles);
+            }
+        }
+        checkSceneBufferFits(file + ": ", vertices, sizeof(glsl::GpuVertex), "vertices", limits);
+        checkSceneBufferFits(file + ": ", indices, sizeof(uint32_t), "triangle corners (indices)", limits);
     }
 
     void checkTextureReference(const std::string& path, const tinygltf::TextureInfo& info) const {
@@ -321,8 +372,24 @@ struct Validator {
                            "texture", true);
             checkExtensionNumber(material.extensions, path, "KHR_materials_emissive_strength", "emissiveStrength", 0.0,
                                  std::numeric_limits<double>::max());
+            const double emission =
+                *std::max_element(material.emissiveFactor.begin(), material.emissiveFactor.end()) *
+                extensionNumber(material.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+            if (emission > kBrightestRepresentable)
+                fail(path + ".emissiveFactor", "with its strength, an emission of " + formatNumber(emission) +
+                                                   ", brighter than this renderer represents (" +
+                                                   formatNumber(kBrightestRepresentable) + ")");
             checkExtensionNumber(material.extensions, path, "KHR_materials_specular", "specularFactor", 0.0, 1.0);
         }
+    }
+
+    // The number `key` of `extension`, or `fallback` where there is none (checkExtensionNumber
+    // has made sure that what is there is a number).
+    static double extensionNumber(const tinygltf::ExtensionMap& extensions, const std::string& extension,
+                                  const std::string& key, double fallback) {
+        const auto found = extensions.find(extension);
+        if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key)) return fallback;
+        return found->second.Get(key).GetNumberAsDouble();
     }
 
     void checkExtensionNumber(const tinygltf::ExtensionMap& extensions, const std::string& path,
@@ -382,6 +449,13 @@ struct Validator {
             for (double component : light.color)
                 if (component < 0.0) fail(path + ".color", formatNumber(component) + " is negative");
             checkNonNegative(path + ".intensity", light.intensity);
+            const double brightest =
+                light.intensity *
+                (light.color.size() == 3 ? *std::max_element(light.color.begin(), light.color.end()) : 1.0);
+            if (brightest > kBrightestRepresentable)
+                fail(path + ".intensity", formatNumber(light.intensity) + " times its colour is " +
+                                              formatNumber(brightest) + ", brighter than this renderer represents (" +
+                                              formatNumber(kBrightestRepresentable) + ")");
             checkNonNegative(path + ".range", light.range);
             if (light.type == "spot") {
                 checkNumber(path + ".spot.outerConeAngle", light.spot.outerConeAngle, 0.0, kPi / 2);
@@ -483,7 +557,18 @@ const std::vector<std::string>& supportedGltfExtensions() {
     return names;
 }
 
-void validateGltf(const tinygltf::Model& model, const std::string& file) {
+std::vector<int> gltfRootNodes(const tinygltf::Model& model) {
+    if (!model.scenes.empty()) return model.scenes[size_t(std::max(model.defaultScene, 0))].nodes;
+    std::vector<char> isChild(model.nodes.size(), 0);
+    for (const tinygltf::Node& node : model.nodes)
+        for (int child : node.children) isChild[size_t(child)] = 1;
+    std::vector<int> roots;
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+        if (!isChild[i]) roots.push_back(int(i));
+    return roots;
+}
+
+void validateGltf(const tinygltf::Model& model, const std::string& file, const SceneBufferLimits& limits) {
     Validator validator{model, file};
     const auto& used = model.extensionsUsed;
     validator.quantized = std::find(used.begin(), used.end(), "KHR_mesh_quantization") != used.end();
@@ -497,6 +582,8 @@ void validateGltf(const tinygltf::Model& model, const std::string& file) {
     validator.checkMeshes();
     validator.checkNodes();
     validator.checkScenes();
+    validator.checkGeometryFits(limits);
+    validator.checkMeshValues();
 }
 
 }  // namespace vct

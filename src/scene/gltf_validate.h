@@ -13,12 +13,19 @@
 
 #include <tiny_gltf.h>
 
+#include "scene/scene_limits.h"
+
 namespace vct {
 
 // The extensions the loader understands; a file that requires any other is refused.
 const std::vector<std::string>& supportedGltfExtensions();
 
-// Throws vct::Error naming `file`, the JSON path and the problem for the first problem found.
-void validateGltf(const tinygltf::Model& model, const std::string& file);
+// Throws vct::Error naming `file`, the JSON path and the problem for the first problem found:
+// first the structure (references, ranges, formats), then whether the geometry fits `limits`
+// (from the accessors' counts), and only then the values (finite numbers, indices in range).
+void validateGltf(const tinygltf::Model& model, const std::string& file, const SceneBufferLimits& limits = {});
+
+// The default scene's root nodes: `scene`, else scene 0, else every node without a parent.
+std::vector<int> gltfRootNodes(const tinygltf::Model& model);
 
 }  // namespace vct

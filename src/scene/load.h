@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 
@@ -16,6 +17,9 @@ struct LoadOptions {
     bool strict = false;
     // Files (the scene, its buffers and images) larger than this are refused.
     uint64_t maxFileBytes = uint64_t(1) << 30;
+    // The vertex and index buffers the scene may need (the device's, when the caller has one):
+    // a file naming more is refused from its counts, before any array is built.
+    SceneBufferLimits bufferLimits;
 };
 
 // Loads a glTF 2.0 file. Throws vct::Error naming the file, the JSON path and the problem.

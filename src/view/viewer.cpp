@@ -19,6 +19,7 @@
 #include "gpu/vk_check.h"
 #include "render/camera.h"
 #include "render/renderer.h"
+#include "render/renderer_limits.h"
 #include "scene/load.h"
 #include "view/controls.h"
 #include "view/present_pass.h"
@@ -214,7 +215,9 @@ bool Viewer::loadScene(const std::string& name) {
     std::printf("loading %s\n", name.c_str());
     Scene loaded;
     try {
-        loaded = vct::loadScene(name);
+        LoadOptions options;
+        options.bufferLimits = sceneBufferLimits(*context_);
+        loaded = vct::loadScene(name, options);
     } catch (const Error& error) {
         state_.error = std::string(error.what()) + " (keeping " + state_.sceneName + ")";
         std::fprintf(stderr, "vct view: %s\n", state_.error.c_str());

@@ -244,6 +244,27 @@ TEST(GltfValidation, NodeNamingAMissingLightIsRefused) {
     expectRefused(gltf, "nodes[0].extensions.KHR_lights_punctual.light: light 5 does not exist");
 }
 
+TEST(GltfValidation, LightOrEmissionBrighterThanFloatsCarryIsRefused) {
+    // Accepted, a light of 1e38 rendered NaN and infinite pixels with exit status 0.
+    GltfBuilder light = test::triangleScene();
+    light.document["extensions"] = {
+        {"KHR_lights_punctual", {{"lights", json::array({{{"type", "point"}, {"intensity", 1e38}}})}}}};
+    expectRefused(light,
+                  "extensions.KHR_lights_punctual.lights[0].intensity: 1e+38 times its colour is 1e+38, "
+                  "brighter than this renderer represents (1e+20)");
+    GltfBuilder colour = test::triangleScene();
+    colour.document["extensions"] = {
+        {"KHR_lights_punctual",
+         {{"lights", json::array({{{"type", "point"}, {"intensity", 10.0}, {"color", {1.0, 1e38, 1.0}}}})}}}};
+    expectRefused(colour, "times its colour is 1e+39");
+    GltfBuilder emission = test::triangleScene();
+    emission.document["materials"] =
+        json::array({{{"emissiveFactor", {1.0, 1.0, 1.0}},
+                      {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e30}}}}}}});
+    emission.document["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+    expectRefused(emission, "materials[0].emissiveFactor: with its strength, an emission of 1e+30");
+}
+
 TEST(GltfValidation, MaterialFactorOutOfRangeIsRefused) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["materials"] = json::array({{{"pbrMetallicRoughness", {{"roughnessFactor", 7.0}}}}});
@@ -267,6 +288,60 @@ TEST(GltfValidation, HugeAccessorWithoutBufferViewIsRefusedBeforeAllocating) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["accessors"].push_back({{"componentType", 5126}, {"count", 4000000000u}, {"type", "VEC3"}});
     expectRefused(gltf, "accessors[2].count: 4000000000 is more than this loader accepts");
+}
+
+TEST(GltfValidation, MeshOfMoreVerticesThanABufferTakesIsRefusedFromItsCounts) {
+    // 2²⁸ positions of zeros, with no buffer view (so the file is a few hundred bytes), as the
+    // mesh's only attribute: without normals every triangle gets vertices of its own, 3 × ⌊2²⁸/3⌋.
+    // Read, they would take about 23 GB; the counts alone refuse them, at once.
+    for (bool sparse : {false, true}) {
+        GltfBuilder gltf = test::triangleScene();
+        json huge = {{"componentType", 5126}, {"count", 1u << 28}, {"type", "VEC3"}};
+        if (sparse) {
+            const std::vector<uint8_t> which = {0};
+            const std::vector<float> moved = {0, 5, 0};
+            huge["sparse"] = {{"count", 1},
+                              {"indices",
+                               {{"bufferView", gltf.addBufferView(which.data(), which.size())},
+                                {"componentType", TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE}}},
+                              {"values", {{"bufferView", gltf.addBufferView(moved.data(), moved.size() * 4)}}}};
+        }
+        gltf.document["accessors"].push_back(huge);
+        gltf.document["meshes"][0]["primitives"][0]["attributes"] = {{"POSITION", 2}};
+        expectRefused(gltf,
+                      "its 268435455 vertices need 8192 MiB in one storage buffer, more than a typical GPU's "
+                      "maxStorageBufferRange of 2048 MiB; at most 67108864 vertices fit");
+    }
+}
+
+TEST(GltfValidation, SceneOverTheDevicesBufferLimitIsRefusedWithTheRenderersSentence) {
+    GltfBuilder gltf = test::triangleScene();  // 3 vertices of 32 bytes
+    TempFolder folder;
+    const std::string path = gltf.writeGltf(folder, "scene").string();
+    LoadOptions options;
+    options.bufferLimits = {64, "a small device"};
+    expectRefused(path,
+                  "its 3 vertices need 96 bytes in one storage buffer, more than a small device's "
+                  "maxStorageBufferRange of 64 bytes; at most 2 vertices fit",
+                  options);
+    options.bufferLimits.maxBufferBytes = 96;
+    EXPECT_EQ(loadError(path, options), "");
+}
+
+TEST(GltfValidation, DeeplyNestedJsonIsRefusedBeforeParsing) {
+    // Nested arrays in the root's `extras`: 20 000 levels overflowed the stack inside the parser.
+    const auto nested = [](size_t depth) {
+        GltfBuilder gltf = test::triangleScene();
+        TempFolder folder;
+        folder.write("scene.bin", gltf.bin);
+        gltf.document["buffers"] = json::array({{{"uri", "scene.bin"}, {"byteLength", gltf.bin.size()}}});
+        const std::string document = gltf.document.dump();
+        const std::string text =
+            "{\"extras\": " + std::string(depth, '[') + std::string(depth, ']') + ", " + document.substr(1);
+        return loadError(folder.write("scene.gltf", text).string());
+    };
+    EXPECT_NE(nested(20000).find("the JSON nests more than 1000 levels deep"), std::string::npos) << nested(20000);
+    EXPECT_EQ(nested(900), "") << "the root object and 900 arrays are 901 levels";
 }
 
 TEST(GltfValidation, SparseIndexPastTheCountIsRefused) {

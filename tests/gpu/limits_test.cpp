@@ -139,6 +139,16 @@ TEST_F(Limits, RendererRefusesBeforeAllocatingAnything) {
     EXPECT_NE(message.find("samples across"), std::string::npos) << message;
 }
 
+TEST_F(Limits, ALightBrighterThanFloatsCarryIsRefusedNamingTheScene) {
+    // Accepted, a light of 1e38 rendered NaN and infinite pixels.
+    Renderer renderer(gpu(), cornell, smallSettings());
+    std::vector<Light> lights = renderer.lights();
+    lights[0].intensity = 1e38f;
+    const std::string message = refusal([&] { renderer.setLights(lights); });
+    EXPECT_NE(message.find("scene 'cornell': light 0"), std::string::npos) << message;
+    EXPECT_NE(message.find("brighter than this renderer represents (1e+20)"), std::string::npos) << message;
+}
+
 TEST_F(Limits, DeviceLostAndOutOfMemorySayWhatHappened) {
     const std::string lost = refusal([] { throwVkError(VK_ERROR_DEVICE_LOST, "vkQueueSubmit2(...)", "x.cpp", 1); });
     EXPECT_EQ(lost.rfind("the GPU device was lost", 0), 0u) << lost;
