@@ -91,6 +91,7 @@ void GpuContext::create(const ContextOptions& options) {
                 "the Vulkan validation layer is not installed (Debian: apt-get install vulkan-validationlayers)");
         layers.push_back("VK_LAYER_KHRONOS_validation");
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        if (options.synchronizationValidation) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
 
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
@@ -101,9 +102,19 @@ void GpuContext::create(const ContextOptions& options) {
                                 VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
     messengerInfo.pfnUserCallback = onDebugMessage;
     messengerInfo.pUserData = this;
+    const VkValidationFeatureEnableEXT synchronization = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT validationFeatures{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    validationFeatures.enabledValidationFeatureCount = 1;
+    validationFeatures.pEnabledValidationFeatures = &synchronization;
+    // The instance's chain: its validation features (when asked for), then the messenger, so the
+    // layer's messages from vkCreateInstance on arrive too. (The messenger's own create info
+    // must end the chain: vkCreateDebugUtilsMessengerEXT takes it with no pNext.)
+    validationFeatures.pNext = &messengerInfo;
 
     VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    instanceInfo.pNext = options.validation ? &messengerInfo : nullptr;
+    instanceInfo.pNext = !options.validation                 ? nullptr
+                         : options.synchronizationValidation ? static_cast<const void*>(&validationFeatures)
+                                                             : &messengerInfo;
     instanceInfo.pApplicationInfo = &application;
     instanceInfo.enabledLayerCount = uint32_t(layers.size());
     instanceInfo.ppEnabledLayerNames = layers.data();

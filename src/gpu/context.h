@@ -17,6 +17,7 @@ namespace vct {
 
 struct ContextOptions {
     bool validation = false;                      // enable VK_LAYER_KHRONOS_validation
+    bool synchronizationValidation = false;       // and its hazard checks (the tests; slow)
     std::string deviceName;                       // substring of the device to use; empty = choose
     std::vector<const char*> instanceExtensions;  // e.g. the surface extensions a window needs
     bool swapchain = false;                       // enable VK_KHR_swapchain on the device
