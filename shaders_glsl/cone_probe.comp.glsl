@@ -10,8 +10,9 @@ layout(set = 0, binding = 1) uniform sampler3D voxelRadiance;
 #include "directional_voxels.glsl"
 
 struct ConeProbe {
-    vec4 origin;     // xyz world, w 1 = the diffuse cone set around `direction`, 0 = one cone
-    vec4 direction;  // xyz unit direction (the normal for a diffuse set), w tan(half-aperture)
+    vec4 origin;     // xyz world, w 0 = one cone, 1 = the diffuse cone set around `direction`,
+                     // 2 = that set leaving a surface `direction.w` voxels below the origin
+    vec4 direction;  // xyz unit direction (the normal for a diffuse set), w tan(half-aperture) of one cone
 };
 layout(std430, set = 0, binding = 2) readonly buffer Probes { ConeProbe probes[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Results { vec4 results[]; };  // radiance, occlusion
@@ -23,7 +24,9 @@ void main() {
     uint index = gl_GlobalInvocationID.x;
     if (index >= probeCount) return;
     ConeProbe probe = probes[index];
-    if (probe.origin.w > 0.5f) {
+    if (probe.origin.w > 1.5f) {
+        results[index] = traceDiffuseCones(probe.origin.xyz, probe.direction.xyz, probe.direction.w);
+    } else if (probe.origin.w > 0.5f) {
         results[index] = traceDiffuseCones(probe.origin.xyz, probe.direction.xyz, NO_SURFACE);
     } else {
         ConeResult cone = traceCone(probe.origin.xyz, probe.direction.xyz, probe.direction.w, NO_SURFACE, 0.0f);

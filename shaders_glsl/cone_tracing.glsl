@@ -8,18 +8,33 @@
 #include "voxel_grid.h"
 
 // The volume seen by a cone travelling along `direction`: isotropic, or (anisotropic voxels) the
-// three directional chains facing the direction, weighted by its squared components.
+// three directional chains facing the direction. Their opacities combine as optical depths
+// weighted by the direction's squared components, 1 − α = Π (1 − αᵢ)^wᵢ, so a wall that is opaque
+// to rays crossing it along its normal stays opaque to every ray that crosses it obliquely (a plain
+// weighted average of the αs let a 50° cone see a tenth of the way through it); each chain's
+// radiance counts by its share of the optical depth.
 vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
     if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
     float directionalLod = max(lod - 1.0f, 0.0f);
     vec3 weight = direction * direction;
-    vec4 directional =
-        weight.x * (direction.x >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_X], uvw, directionalLod)
-                                        : textureLod(directionalVoxels[DIRECTION_NEG_X], uvw, directionalLod)) +
-        weight.y * (direction.y >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Y], uvw, directionalLod)
-                                        : textureLod(directionalVoxels[DIRECTION_NEG_Y], uvw, directionalLod)) +
-        weight.z * (direction.z >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Z], uvw, directionalLod)
-                                        : textureLod(directionalVoxels[DIRECTION_NEG_Z], uvw, directionalLod));
+    vec4 alongX = direction.x >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_X], uvw, directionalLod)
+                                      : textureLod(directionalVoxels[DIRECTION_NEG_X], uvw, directionalLod);
+    vec4 alongY = direction.y >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Y], uvw, directionalLod)
+                                      : textureLod(directionalVoxels[DIRECTION_NEG_Y], uvw, directionalLod);
+    vec4 alongZ = direction.z >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Z], uvw, directionalLod)
+                                      : textureLod(directionalVoxels[DIRECTION_NEG_Z], uvw, directionalLod);
+    // Optical depth of each chain; an opaque texel counts as transmitting 1/1000.
+    vec3 opacity = clamp(vec3(alongX.a, alongY.a, alongZ.a), 0.0f, 0.999f);
+    vec3 depth = -log(1.0f - opacity) * weight;
+    float totalDepth = depth.x + depth.y + depth.z;
+    vec4 directional = vec4(0.0f);
+    if (totalDepth > 0.0f) {
+        vec3 share = depth / totalDepth;
+        vec3 radiance = share.x * (alongX.rgb / max(alongX.a, 1e-6f)) + share.y * (alongY.rgb / max(alongY.a, 1e-6f)) +
+                        share.z * (alongZ.rgb / max(alongZ.a, 1e-6f));
+        float alpha = 1.0f - exp(-totalDepth);
+        directional = vec4(radiance * alpha, alpha);
+    }
     // Below level 1 blend towards the finest (isotropic) level.
     return lod >= 1.0f ? directional : mix(textureLod(voxelRadiance, uvw, 0.0f), directional, lod);
 }
@@ -57,6 +72,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     vec3 color = vec3(0.0f);
     float alpha = 0.0f;
     float occlusion = 0.0f;
+    vec3 lastRadiance = vec3(0.0f);  // radiance (premultiplied ÷ opacity) of the last sample met
     float distance = 0.5f;  // the origin is already offset from the surface
     for (int i = 0; i < 512 && distance < maxDistance && alpha < stopOpacity; ++i) {
         float diameter = max(1.0f, 2.0f * tanHalfAperture * distance);
@@ -91,8 +107,16 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
             color += (1.0f - alpha) * correctedColor;
             occlusion += (1.0f - occlusion) * correctedAlpha / (1.0f + falloff * distance);
             alpha += (1.0f - alpha) * correctedAlpha;
+            lastRadiance = voxel.rgb / voxel.a;
         }
         distance += stepLength;
+    }
+    // Stopped because it is nearly opaque: what the last few percent would have met lies behind
+    // the surface it stopped in, so the remainder takes that surface's light instead of none (a
+    // closed room would otherwise lose 1 - stopOpacity of every bounce).
+    if (alpha >= stopOpacity) {
+        color += (1.0f - alpha) * lastRadiance;
+        occlusion += (1.0f - occlusion) / (1.0f + falloff * distance);
     }
     ConeResult result;
     result.radiance = color / frame.radianceScale;
