@@ -18,6 +18,10 @@ layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
 // The reduced diffuse cones' result per sample, where TRACES_DIFFUSE_CONES is false.
 layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
+// The shadow maps' depths, for the PCF kernel's blocker search (shadows.glsl).
+layout(set = 0, binding = 14) uniform sampler2DArray sunShadowDepths;
+layout(set = 0, binding = 15) uniform sampler2DArray localShadowDepths;
+#define SHADOW_BLOCKER_SEARCH
 
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"

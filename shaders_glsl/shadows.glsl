@@ -1,6 +1,8 @@
-// Shadow-map visibility with 5×5 percentage-closer filtering.
+// Shadow-map visibility with 5×5 percentage-closer filtering whose kernel narrows where the
+// occluder is near (contact hardening).
 // Requires: shadowViews[] (ShadowView), sunShadowMaps and localShadowMaps (sampler2DArrayShadow),
-// frame (FrameConstants).
+// frame (FrameConstants); with SHADOW_BLOCKER_SEARCH defined, also sunShadowDepths and
+// localShadowDepths (sampler2DArray of the same maps, nearest filtering) for the filtered path.
 #ifndef VCT_SHADOWS_GLSL
 #define VCT_SHADOWS_GLSL
 
@@ -13,13 +15,31 @@ uint cubeFace(vec3 toSurface) {
     return toSurface.z >= 0.0f ? 4u : 5u;
 }
 
+// How far from facing the light a receiver's plane is trusted: tan 80°.
+const float MAX_RECEIVER_SLOPE = 5.67f;
+// The penumbra of an occluder at distance D is D·tan(LIGHT_ANGULAR_RADIUS) wide (the sun's 0.27°,
+// doubled), up to the PCF kernel: KHR_lights_punctual lights are points, whose shadows are hard,
+// and a kernel as wide at contact as far away lights the crease where an occluder meets the
+// receiver (a wall standing on a floor) by half.
+const float TAN_LIGHT_ANGULAR_RADIUS = 0.0094f;
+
 float sampleShadowMap(uint array, vec4 coordinate) {
     return array == 0u ? texture(sunShadowMaps, coordinate) : texture(localShadowMaps, coordinate);
 }
 
+// The point's shadow-map coordinates: uv, and depth in the map's own [0, 1] range.
+vec3 shadowMapCoordinates(ShadowView view, vec3 position) {
+    vec4 clip = view.viewProjection * vec4(position, 1.0f);
+    vec3 ndc = clip.xyz / clip.w;
+    return vec3(ndc.xy * 0.5f + 0.5f, ndc.z);
+}
+
 // Fraction of the light's view that reaches `position` (1 = lit). The position is pushed along
-// the normal by a few shadow-map texels (normal-offset shadows) on top of the slope-scaled
-// depth bias the shadow pass applies, which removes acne without detaching shadows.
+// the normal by a few shadow-map texels (normal-offset shadows), and each PCF tap compares
+// against the depth the receiver's own plane has at that tap (receiver-plane depth bias, Isidoro
+// 2006) instead of a slope-scaled bias on the occluders: an occluder seen edge on by the light (a
+// wall meeting a floor) would get a bias of several texels from its own slope and let light
+// through the crease where it meets the receiver.
 // `filtered` = false takes one bilinear comparison instead of 25: enough for a voxel, whose
 // footprint is far wider than the kernel.
 float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanceToLight, bool filtered) {
@@ -33,19 +53,83 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     vec3 offsetPosition = position + normal * (frame.shadowNormalOffset * texelWorld);
     vec4 clip = view.viewProjection * vec4(offsetPosition, 1.0f);
     if (clip.w <= 0.0f) return 1.0f;
-    vec3 ndc = clip.xyz / clip.w;
-    vec2 uv = ndc.xy * 0.5f + 0.5f;
-    if (any(lessThan(uv, vec2(0.0f))) || any(greaterThan(uv, vec2(1.0f))) || ndc.z > 1.0f) return 1.0f;
+    vec3 centre = shadowMapCoordinates(view, offsetPosition);
+    if (any(lessThan(centre.xy, vec2(0.0f))) || any(greaterThan(centre.xy, vec2(1.0f))) || centre.z > 1.0f)
+        return 1.0f;
 
     uint array = uint(view.params.x);
-    if (!filtered) return sampleShadowMap(array, vec4(uv, view.params.y, ndc.z));
+    if (!filtered) return sampleShadowMap(array, vec4(centre.xy, view.params.y, centre.z));
     vec2 texel = 1.0f / vec2(array == 0u ? textureSize(sunShadowMaps, 0).xy : textureSize(localShadowMaps, 0).xy);
+
+    // The receiver plane's depth gradient over the map, dz/d(uv), from two points on the plane.
+    vec3 tangent = abs(normal.x) < 0.9f ? normalize(cross(normal, vec3(1.0f, 0.0f, 0.0f)))
+                                        : normalize(cross(normal, vec3(0.0f, 1.0f, 0.0f)));
+    vec3 bitangent = cross(normal, tangent);
+    vec3 alongTangent = shadowMapCoordinates(view, offsetPosition + tangent * texelWorld) - centre;
+    vec3 alongBitangent = shadowMapCoordinates(view, offsetPosition + bitangent * texelWorld) - centre;
+    float determinant = alongTangent.x * alongBitangent.y - alongTangent.y * alongBitangent.x;
+    vec2 depthGradient = vec2(0.0f);
+    if (abs(determinant) > 1e-20f)
+        depthGradient = vec2(alongBitangent.y * alongTangent.z - alongTangent.y * alongBitangent.z,
+                             alongTangent.x * alongBitangent.z - alongBitangent.x * alongTangent.z) /
+                        determinant;
+    // A receiver nearly edge on to the light (whose light is nearly nothing) must not reach far:
+    // its depth may change by at most MAX_RECEIVER_SLOPE × a texel's depth along the light.
+    vec3 lightAxis = uint(light.radiantIntensity.w) == LIGHT_DIRECTIONAL ? light.direction.xyz
+                                                                         : normalize(position - light.positionRange.xyz);
+    float texelDepth = abs(shadowMapCoordinates(view, offsetPosition + lightAxis * texelWorld).z - centre.z);
+    float change = length(depthGradient * texel);
+    if (change > MAX_RECEIVER_SLOPE * texelDepth) depthGradient *= MAX_RECEIVER_SLOPE * texelDepth / change;
+    // The normal offset keeps the centre tap clear of its own surface's texels (it lifts the point
+    // 1.5 texels, more than the one texel a bilinear comparison spans at any slope); the plane
+    // carries that margin to the other taps.
+
     float radius = frame.pcfRadius;
+#ifdef SHADOW_BLOCKER_SEARCH
+    // Blockers: texels of the kernel nearer the light than the receiver's plane there. Their mean
+    // distance in front of it sets the kernel's width; none at all means fully lit.
+    float blockerDepth = 0.0f;
+    float blockers = 0.0f;
+    for (int y = -2; y <= 2; ++y)
+        for (int x = -2; x <= 2; ++x) {
+            vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
+            float receiverDepth = centre.z + dot(depthGradient, offset);
+            vec3 coordinate = vec3(centre.xy + offset, view.params.y);
+            float stored = array == 0u ? textureLod(sunShadowDepths, coordinate, 0.0f).r
+                                       : textureLod(localShadowDepths, coordinate, 0.0f).r;
+            if (stored < receiverDepth) {
+                blockerDepth += receiverDepth - stored;
+                blockers += 1.0f;
+            }
+        }
+    if (blockers == 0.0f) return 1.0f;
+    float blockerDistance = blockerDepth / blockers / max(texelDepth, 1e-20f) * texelWorld;
+    radius = min(radius, blockerDistance * TAN_LIGHT_ANGULAR_RADIUS / texelWorld);
+    float lit = 0.0f;
+    // 5×5 taps spread over ±radius texels. Each tap is lit only if none of the four texels around
+    // it is nearer the light than the receiver's plane there: within a texel of a crease the map
+    // holds both surfaces, and this reads the floor beside a wall as shadowed rather than letting
+    // the wall's far side light it (a darker line along a lit crease, against a lit line along a
+    // dark one).
+    for (int y = -2; y <= 2; ++y)
+        for (int x = -2; x <= 2; ++x) {
+            vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
+            float depth = centre.z + dot(depthGradient, offset);
+            vec3 coordinate = vec3(centre.xy + offset, view.params.y);
+            vec4 stored = array == 0u ? textureGather(sunShadowDepths, coordinate, 0)
+                                      : textureGather(localShadowDepths, coordinate, 0);
+            lit += min(min(stored.x, stored.y), min(stored.z, stored.w)) >= depth ? 1.0f : 0.0f;
+        }
+#else
     float lit = 0.0f;
     // 5×5 taps spread over ±radius texels; each tap is itself a bilinear 2×2 comparison.
     for (int y = -2; y <= 2; ++y)
-        for (int x = -2; x <= 2; ++x)
-            lit += sampleShadowMap(array, vec4(uv + vec2(x, y) * (0.5f * radius) * texel, view.params.y, ndc.z));
+        for (int x = -2; x <= 2; ++x) {
+            vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
+            float depth = centre.z + dot(depthGradient, offset);
+            lit += sampleShadowMap(array, vec4(centre.xy + offset, view.params.y, depth));
+        }
+#endif
     return lit / 25.0f;
 }
 

@@ -139,7 +139,6 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = desc.cullMode;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.depthBiasEnable = desc.depthBias;
     raster.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -155,7 +154,6 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
     blend.attachmentCount = uint32_t(blends.size());
     blend.pAttachments = blends.data();
     std::vector<VkDynamicState> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    if (desc.depthBias) dynamicStates.push_back(VK_DYNAMIC_STATE_DEPTH_BIAS);
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = uint32_t(dynamicStates.size());
     dynamic.pDynamicStates = dynamicStates.data();

@@ -42,7 +42,6 @@ struct GraphicsPipelineDesc {
     std::vector<VkFormat> colorFormats;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     bool depthTest = false;
-    bool depthBias = false;  // slope-scaled bias set dynamically (shadow maps)
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
     // The fragment shader's specialization constants: element i is constant_id i (a uint, or a
     // bool as VkBool32); empty leaves the shader's defaults.

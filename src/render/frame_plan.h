@@ -27,7 +27,7 @@ const char* passName(Pass pass);
 
 // What changed since the passes that depend on it last ran.
 struct StaleInputs {
-    bool shadows = true;   // lights moved, geometry changed, or the shadow bias did
+    bool shadows = true;   // lights moved or geometry changed
     bool voxels = true;    // geometry changed
     bool radiance = true;  // lights changed
     bool bounces = false;  // the bounce series has not converged yet (progressive bounces)

@@ -138,10 +138,7 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     stale_.radiance = true;
 }
 
-void Renderer::setShading(const ShadingSettings& shading) {
-    if (shading.shadowSlopeBias != settings_.shading.shadowSlopeBias) stale_.shadows = true;
-    settings_.shading = shading;
-}
+void Renderer::setShading(const ShadingSettings& shading) { settings_.shading = shading; }
 
 void Renderer::writeFrameConstants() {
     const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
@@ -213,7 +210,7 @@ FrameStats Renderer::renderFrame() {
 
     submit([&](VkCommandBuffer commands) {
         run(commands, Pass::Shadow,
-            [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, settings_); });
+            [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer); });
         run(commands, Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
         // Progressively converging (the viewer), the injection is itself a bounce: the light
         // sources' light plus what the cones gather from the last frame's light, so a moved light

@@ -107,9 +107,8 @@ struct ShadingSettings {
     // Light that is not physical: off by default so `full` converges towards the ground truth.
     float ambientFactor = 0.0f;
 
-    float shadowNormalOffset = 1.5f;  // texels
-    float shadowSlopeBias = 2.0f;     // a change redraws the shadow maps
-    float pcfRadius = 2.0f;           // texels covered by the 5×5 kernel on each side
+    float shadowNormalOffset = 1.5f;  // texels (shadows.glsl: no depth bias on the occluders)
+    float pcfRadius = 2.0f;           // texels covered by the 5×5 kernel on each side, at most
 
     // Voxel cone tracing.
     uint32_t diffuseConeCount = 6;      // one along the normal, the rest in a ring around it

@@ -53,6 +53,8 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(13, reducedDiffuse, pointSampler.sampler)
+            .sampledImage(14, shadows.sunMaps.view, pointSampler.sampler)
+            .sampledImage(15, shadows.localMaps.view, pointSampler.sampler)
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.layout);
     });
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

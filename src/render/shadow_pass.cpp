@@ -55,7 +55,9 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& scene
                 farthest = std::max(farthest, glm::distance(light.position, point));
             }
             const float zfar = std::max(farthest * 1.01f, 1e-5f);
-            const float znear = std::max(zfar * 1e-4f, 1e-7f);
+            // Relative to zfar only (itself at least 1e-5), so a scene scaled by a power of two
+            // gets the same depth mapping and the same shadows.
+            const float znear = zfar * 1e-4f;
             if (light.type == LightType::Spot) {
                 const float fov = std::min(2.0f * light.outerConeAngle * 1.05f + 0.02f, glm::radians(170.0f));
                 layout.views.push_back(perspectiveView(light.position, light.direction, fov, znear, zfar,
@@ -102,12 +104,11 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
     desc.vertexShader = "shadow.vert";
     desc.depthFormat = kShadowFormat;
     desc.depthTest = true;
-    desc.depthBias = true;
     pipeline = createGraphicsPipeline(context, desc);
 }
 
 void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout,
-                        VkBuffer viewsBuffer, const RenderSettings& settings) {
+                        VkBuffer viewsBuffer) {
     const VkImageLayout previous = initialized ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
     for (GpuImage* maps : {&sunMaps, &localMaps})
         imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, previous,
@@ -121,7 +122,6 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
         .buffer(1, viewsBuffer)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
     vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdSetDepthBias(commands, 0.0f, 0.0f, settings.shading.shadowSlopeBias);
 
     // Unused arrays (no light of that kind) are cleared once so they sample as "lit".
     auto renderLayer = [&](GpuImage& maps, uint32_t layer, int viewIndex) {

@@ -27,8 +27,7 @@ struct ShadowPass {
     ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings);
 
     // Renders every view into its layer and leaves both arrays ready for sampling.
-    void record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout, VkBuffer viewsBuffer,
-                const RenderSettings& settings);
+    void record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout, VkBuffer viewsBuffer);
 
     // Both arrays exist even when unused (1×1) so the shading pass can always bind them.
     GpuImage sunMaps;

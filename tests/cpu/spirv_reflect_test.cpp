@@ -228,6 +228,8 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     for (uint32_t b = 4; b <= 11; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
     expected.push_back(binding(0, 12, kCombined, kFragment, 6));  // the directional volumes
     expected.push_back(binding(0, 13, kCombined, kFragment));     // the reduced diffuse cones
+    expected.push_back(binding(0, 14, kCombined, kFragment));     // the sun shadow maps' depths
+    expected.push_back(binding(0, 15, kCombined, kFragment));     // the local shadow maps' depths
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }

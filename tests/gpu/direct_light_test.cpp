@@ -235,5 +235,51 @@ TEST_F(DirectLight, SpotLightFollowsTheKhrConeFalloff) {
     });
 }
 
+// A wall of zero thickness standing on a floor, the sun behind it: the floor along the crease is in
+// the wall's shadow however close to the wall it lies. Seen from close by (a pixel covers about
+// 3 mm), every pixel the wall shadows must be dark. A slope-scaled depth bias on the wall, which
+// the sun sees nearly edge on, and a PCF kernel as wide at contact as far away lit a strip a few
+// millimetres wide along such creases (the sun room's direct light had relMSE 3.2 from it).
+TEST_F(DirectLight, AWallStandingOnAFloorShadowsItRightUpToTheCrease) {
+    Scene scene = floorScene(Light{});
+    scene.lights[0].type = LightType::Directional;
+    scene.lights[0].intensity = 3.0f;
+    scene.lights[0].direction = glm::normalize(glm::vec3(0.35f, -1.0f, 0.25f));
+    // The wall x = 0, 2 m high, across the floor.
+    const uint32_t first = uint32_t(scene.vertices.size());
+    for (glm::vec3 p : {glm::vec3(0, 0, -4), glm::vec3(0, 2, -4), glm::vec3(0, 2, 4), glm::vec3(0, 0, 4)})
+        scene.vertices.push_back({p, 0.0f, glm::vec3(1, 0, 0), 0.0f});
+    for (uint32_t index : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + index);
+    scene.triangleMaterials.insert(scene.triangleMaterials.end(), {0, 0});
+    Camera& camera = scene.cameras[0];
+    camera.yfov = glm::radians(40.0f);
+    camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    aimCamera(camera, glm::vec3(0.4f, 0.4f, 0.1f), glm::vec3(0.0f, 0.0f, 0.0f));
+
+    const uint32_t size = 128;
+    Renderer renderer(gpu(), scene, directSettings(size));
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    const glm::vec3 toSun = -scene.lights[0].direction;
+    const float litFloor = 3.0f * toSun.y * 0.8f / kPi;
+    int shadowed = 0, lit = 0;
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) {
+            const std::optional<Hit> hit = intersect(scene, camera.position, pixelRay(camera, x, y, size, size), 1e9f);
+            ASSERT_TRUE(hit.has_value());
+            glm::vec3 normal = hit->normal;
+            if (glm::dot(normal, camera.position - hit->position) < 0) normal = -normal;
+            const bool dark = glm::dot(normal, toSun) <= 0.0f ||
+                              intersect(scene, hit->position + normal * 1e-5f, toSun, 1e9f).has_value();
+            if (dark) {
+                ++shadowed;
+                EXPECT_LT(image.pixel(x, y)[0], 0.01f * litFloor) << "shadowed pixel " << x << "," << y << " is lit";
+            } else {
+                ++lit;
+            }
+        }
+    EXPECT_GT(shadowed, 4000) << "the view should hold the shadowed crease";
+}
+
 }  // namespace
 }  // namespace vct::test
