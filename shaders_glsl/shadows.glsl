@@ -86,33 +86,34 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
 
     float radius = frame.pcfRadius;
 #ifdef SHADOW_BLOCKER_SEARCH
-    // Blockers: texels of the kernel nearer the light than the receiver's plane there. Their mean
-    // distance in front of it sets the kernel's width; none at all means fully lit.
+    // Blockers: texels of the kernel's footprint nearer the light than the receiver's plane there,
+    // gathered four at a time over a 3×3 grid of taps. Their mean distance in front of the plane
+    // sets the kernel's width; none means fully lit, all of them fully shadowed.
     float blockerDepth = 0.0f;
     float blockers = 0.0f;
-    for (int y = -2; y <= 2; ++y)
-        for (int x = -2; x <= 2; ++x) {
-            vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec2 offset = vec2(x, y) * radius * texel;
             float receiverDepth = centre.z + dot(depthGradient, offset);
             vec3 coordinate = vec3(centre.xy + offset, view.params.y);
-            float stored = array == 0u ? textureLod(sunShadowDepths, coordinate, 0.0f).r
-                                       : textureLod(localShadowDepths, coordinate, 0.0f).r;
-            if (stored < receiverDepth) {
-                blockerDepth += receiverDepth - stored;
-                blockers += 1.0f;
-            }
+            vec4 stored = array == 0u ? textureGather(sunShadowDepths, coordinate, 0)
+                                      : textureGather(localShadowDepths, coordinate, 0);
+            vec4 nearer = vec4(lessThan(stored, vec4(receiverDepth)));
+            blockers += dot(nearer, vec4(1.0f));
+            blockerDepth += dot(nearer, vec4(receiverDepth) - stored);
         }
     if (blockers == 0.0f) return 1.0f;
+    if (blockers == 36.0f) return 0.0f;
     float blockerDistance = blockerDepth / blockers / max(texelDepth, 1e-20f) * texelWorld;
     radius = min(radius, blockerDistance * TAN_LIGHT_ANGULAR_RADIUS / texelWorld);
+    // Each tap is lit only if none of the four texels around it is nearer the light than the
+    // receiver's plane there: within a texel of a crease the map holds both surfaces, and this
+    // reads the floor beside a wall as shadowed rather than letting the wall's far side light it
+    // (a darker line along a lit crease, against a lit line along a dark one).
+    int reach = radius < 0.25f ? 0 : 2;  // at contact the 25 taps would all be the centre
     float lit = 0.0f;
-    // 5×5 taps spread over ±radius texels. Each tap is lit only if none of the four texels around
-    // it is nearer the light than the receiver's plane there: within a texel of a crease the map
-    // holds both surfaces, and this reads the floor beside a wall as shadowed rather than letting
-    // the wall's far side light it (a darker line along a lit crease, against a lit line along a
-    // dark one).
-    for (int y = -2; y <= 2; ++y)
-        for (int x = -2; x <= 2; ++x) {
+    for (int y = -reach; y <= reach; ++y)
+        for (int x = -reach; x <= reach; ++x) {
             vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
             float depth = centre.z + dot(depthGradient, offset);
             vec3 coordinate = vec3(centre.xy + offset, view.params.y);
@@ -120,6 +121,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
                                       : textureGather(localShadowDepths, coordinate, 0);
             lit += min(min(stored.x, stored.y), min(stored.z, stored.w)) >= depth ? 1.0f : 0.0f;
         }
+    return lit / float((2 * reach + 1) * (2 * reach + 1));
 #else
     float lit = 0.0f;
     // 5×5 taps spread over ±radius texels; each tap is itself a bilinear 2×2 comparison.
@@ -129,8 +131,8 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
             float depth = centre.z + dot(depthGradient, offset);
             lit += sampleShadowMap(array, vec4(centre.xy + offset, view.params.y, depth));
         }
-#endif
     return lit / 25.0f;
+#endif
 }
 
 #endif
