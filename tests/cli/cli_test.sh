@@ -83,6 +83,30 @@ case "$case_name" in
     status=$?
     [ "$status" -eq 124 ] || fail "exit code $status: the render was not still running after 3 s"
     echo "ok: interrupted after 3 s" ;;
+  light-intensity-without-a-sun)
+    expect_refusal "\-\-light-intensity sets the illuminance of a sun, and scene 'cornell' has none: give --light-dir" \
+      "${small[@]}" --scene cornell --light-intensity 5 --out "$good" ;;
+  light-intensity-sets-the-scenes-sun)
+    # sun-room has a sun: --light-intensity alone sets it (direct light doubles with it).
+    for intensity in 1 2; do
+      "$vct" render "${small[@]}" --scene sun-room --mode direct --light-intensity "$intensity" \
+        --out "$work/sun$intensity.pfm" >"$work/stdout" 2>"$work/stderr" || fail "the render failed"
+    done
+    cmp -s "$work/sun1.pfm" "$work/sun2.pfm" && fail "--light-intensity was ignored"
+    echo "ok: --light-intensity set sun-room's sun" ;;
+  texture-bomb)
+    # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded): refused
+    # from the headers, before anything is decoded, when they exceed the budget for decoded images.
+    for name in a b; do
+      printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x40\x00\x00\x00\x40\x00\x08\x06\x00\x00\x00\x00\x00\x00\x00' \
+        >"$work/$name.png"
+    done
+    printf '%s' '{"asset":{"version":"2.0"},"images":[{"uri":"a.png"},{"uri":"b.png"}],
+      "textures":[{"source":0},{"source":1}],
+      "materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}},
+                   {"pbrMetallicRoughness":{"baseColorTexture":{"index":1}}}]}' >"$work/bomb.gltf"
+    expect_refusal "bomb.gltf: images\[[01]\] ('[ab].png', 16384×16384) would bring the decoded images to [0-9]* MiB, over the budget of [0-9]* MiB" \
+      "${small[@]}" --scene "$work/bomb.gltf" --out "$good" ;;
   success-replaces)
     "$vct" render "${small[@]}" --out "$good" >"$work/stdout" 2>"$work/stderr" || fail "render failed"
     head -c 8 "$good" | grep -q PNG || fail "the output is not a PNG"
