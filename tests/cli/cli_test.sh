@@ -83,6 +83,50 @@ case "$case_name" in
     status=$?
     [ "$status" -eq 124 ] || fail "exit code $status: the render was not still running after 3 s"
     echo "ok: interrupted after 3 s" ;;
+  interrupted-while-writing)
+    # SIGTERM while the image is being written: the temporary file goes, the earlier image stays.
+    # The test makes OUT.tmp.PID a FIFO it reads a little of, so the render is inside the write
+    # (a 128×128 PFM is 196 KB, more than a pipe holds) when the signal comes.
+    out="$work/out.pfm"
+    printf 'an earlier image\n' >"$out"
+    cp "$out" "$work/expected-pfm"
+    "$vct" render --width 128 --height 128 --voxels 32 --shadow-map 256 --out "$out" >"$work/stdout" 2>"$work/stderr" &
+    pid=$!
+    fifo="$out.tmp.$pid"
+    mkfifo "$fifo"
+    exec 3<>"$fifo"
+    timeout 90 head -c 1000 <&3 >/dev/null || fail "the render never wrote its image"
+    kill -TERM "$pid"
+    wait "$pid"
+    status=$?
+    exec 3<&-
+    [ "$status" -eq 143 ] || fail "exit status $status, expected 143 (ended by SIGTERM)"
+    [ ! -e "$fifo" ] || fail "the temporary file was left behind"
+    cmp -s "$out" "$work/expected-pfm" || fail "the earlier image was changed"
+    echo "ok: SIGTERM while writing removed $(basename "$fifo") and kept the earlier image" ;;
+  bench-interrupted-keeps-the-earlier-set)
+    # SIGTERM to vct bench after it wrote two of its three temporary files: none of the earlier
+    # files is replaced, no temporary file stays. The third temporary file is a FIFO nobody reads,
+    # so the bench blocks opening it.
+    dir="$work/bench"
+    mkdir "$dir"
+    for file in bench.csv bench.json bench.svg; do printf 'earlier %s\n' "$file" >"$dir/$file"; done
+    "$vct" bench --quick --scenes cornell --frames 1 --warmup 0 --out-dir "$dir" >"$work/stdout" 2>"$work/stderr" &
+    pid=$!
+    mkfifo "$dir/bench.svg.tmp.$pid"
+    for _ in $(seq 600); do [ -e "$dir/bench.json.tmp.$pid" ] && break; sleep 0.2; done
+    [ -e "$dir/bench.json.tmp.$pid" ] || fail "the bench never began writing its files"
+    sleep 0.5
+    kill -TERM "$pid"
+    wait "$pid"
+    status=$?
+    [ "$status" -eq 143 ] || fail "exit status $status, expected 143 (ended by SIGTERM)"
+    for file in bench.csv bench.json bench.svg; do
+      [ "$(cat "$dir/$file")" = "earlier $file" ] || fail "$file was replaced by the interrupted run"
+    done
+    leftovers=$(find "$dir" -name '*.tmp.*' | wc -l)
+    [ "$leftovers" -eq 0 ] || fail "$leftovers temporary files were left behind"
+    echo "ok: the interrupted bench left the earlier set whole" ;;
   light-intensity-without-a-sun)
     expect_refusal "\-\-light-intensity sets the illuminance of a sun, and scene 'cornell' has none: give --light-dir" \
       "${small[@]}" --scene cornell --light-intensity 5 --out "$good" ;;
