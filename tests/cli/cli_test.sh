@@ -151,6 +151,23 @@ case "$case_name" in
                    {"pbrMetallicRoughness":{"baseColorTexture":{"index":1}}}]}' >"$work/bomb.gltf"
     expect_refusal "bomb.gltf: images\[[01]\] ('[ab].png', 16384×16384) would bring the decoded images to [0-9]* MiB, over the budget of [0-9]* MiB" \
       "${small[@]}" --scene "$work/bomb.gltf" --out "$good" ;;
+  many-large-triangles)
+    # 300 000 instances of a triangle as large as the scene: about 10⁸ (triangle, tile) work items
+    # at 128³, which crashed lavapipe after two minutes. Their areas alone exceed the voxelizer's
+    # bound, so the scene is refused before any tile is searched.
+    {
+      printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,'
+      printf 'AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],'
+      printf '"bufferViews":[{"buffer":0,"byteLength":36}],'
+      printf '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],"max":[1,1,1]}],'
+      printf '"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":['
+      seq 0 299999 | awk '{ printf "%s{\"mesh\":0,\"translation\":[0,0,%g]}", (NR > 1 ? "," : ""), ($1 % 1000) * 0.0005 }'
+      printf '],"scenes":[{"nodes":['
+      seq -s, 0 299999 | tr -d '\n'
+      printf ']}],"scene":0}'
+    } >"$work/walls.gltf"
+    expect_refusal "scene '.*walls.gltf': voxelizing its 300000 triangles at 128³ takes at least [0-9]* work items" \
+      --width 32 --height 32 --voxels 128 --scene "$work/walls.gltf" --out "$good" ;;
   success-replaces)
     "$vct" render "${small[@]}" --out "$good" >"$work/stdout" 2>"$work/stderr" || fail "render failed"
     head -c 8 "$good" | grep -q PNG || fail "the output is not a PNG"
