@@ -31,13 +31,32 @@ void checkJsonNesting(const std::string& text, const std::string& path) {
 
 namespace {
 
-// Members tinygltf reads into 64-bit sizes, not ints.
+// Members whose integers tinygltf reads into an int: indices of other entries, and enums. Numbers
+// elsewhere (positions, min/max, weights, sizes and offsets, which tinygltf keeps in doubles or
+// 64-bit sizes) may be any integer.
+bool isIndexMember(const std::string& key) {
+    static const char* const keys[] = {"scene",      "nodes",     "children", "mesh",   "camera",
+                                       "skin",       "skeleton",  "joints",   "buffer", "bufferView",
+                                       "indices",    "material",  "sampler",  "source", "index",
+                                       "texCoord",   "input",     "output",   "node",   "light",
+                                       "attributes", "targets",   "target",   "mode",   "componentType",
+                                       "magFilter",  "minFilter", "wrapS",    "wrapT",  "inverseBindMatrices"};
+    for (const char* index : keys)
+        if (key == index) return true;
+    return false;
+}
+
 bool isSizeMember(const std::string& key) {
     return key == "byteOffset" || key == "byteLength" || key == "count" || key == "byteStride";
 }
 
-void checkIntegers(const nlohmann::json& value, const std::string& jsonPath, const std::string& path) {
+// `key` is the member the value belongs to (for an array's elements, the array's). Integers are
+// checked under an index member: itself, an array of indices ("children"), or an object whose members
+// are all indices ("attributes", each of "targets").
+void checkIntegers(const nlohmann::json& value, const std::string& jsonPath, const std::string& key,
+                   const std::string& path) {
     if (value.is_number_integer()) {
+        if (!isIndexMember(key)) return;
         const bool fits = value.is_number_unsigned() ? value.get<uint64_t>() <= uint64_t(INT_MAX)
                                                      : value.get<int64_t>() >= int64_t(INT_MIN);
         if (!fits)
@@ -46,21 +65,24 @@ void checkIntegers(const nlohmann::json& value, const std::string& jsonPath, con
                         std::to_string(INT_MIN) + " to " + std::to_string(INT_MAX) + ")");
     } else if (value.is_array()) {
         for (size_t i = 0; i < value.size(); ++i)
-            checkIntegers(value[i], jsonPath + "[" + std::to_string(i) + "]", path);
+            checkIntegers(value[i], jsonPath + "[" + std::to_string(i) + "]", key, path);
     } else if (value.is_object()) {
-        for (const auto& [key, member] : value.items()) {
-            if (key == "extras" || isSizeMember(key)) continue;
-            if (jsonPath.size() >= 10 && jsonPath.compare(jsonPath.size() - 10, 10, "extensions") == 0 &&
-                key != "KHR_lights_punctual")
+        const bool attributeMap = key == "attributes" || key == "targets";
+        for (const auto& [member, memberValue] : value.items()) {
+            if (member == "extras" || isSizeMember(member)) continue;
+            if (key == "extensions" && member != "KHR_lights_punctual")
                 continue;  // an extension the loader does not read may hold any number
-            checkIntegers(member, jsonPath.empty() ? key : jsonPath + "." + key, path);
+            checkIntegers(memberValue, jsonPath.empty() ? member : jsonPath + "." + member,
+                          attributeMap && memberValue.is_number_integer() ? "attributes" : member, path);
         }
     }
 }
 
 }  // namespace
 
-void checkIntegerRanges(const nlohmann::json& document, const std::string& path) { checkIntegers(document, "", path); }
+void checkIntegerRanges(const nlohmann::json& document, const std::string& path) {
+    checkIntegers(document, "", "", path);
+}
 
 void checkGlbVersion(const std::vector<uint8_t>& bytes, const std::string& path) {
     if (bytes.size() < 8) return;  // tinygltf reports the truncated header

@@ -19,9 +19,10 @@ inline constexpr size_t kMaxJsonDepth = 1000;
 // Throws vct::Error naming `path` and the byte where `text` nests deeper than kMaxJsonDepth.
 void checkJsonNesting(const std::string& text, const std::string& path);
 
-// Throws vct::Error "PATH: nodes[0].mesh is 2147483648, larger than any index (at most
-// 2147483647)" for an integer that tinygltf would store in an int. Byte offsets, lengths and
-// counts (64-bit in tinygltf), `extras` and extensions the loader does not read are not checked.
+// Throws vct::Error "PATH: nodes[0].mesh is 2147483648, outside the 32-bit range..." for an index
+// or enum that tinygltf would wrap into a negative int. Numbers it keeps in doubles or 64-bit sizes
+// (positions, min/max, byte offsets, lengths, counts), `extras` and extensions the loader does not
+// read are not checked.
 void checkIntegerRanges(const nlohmann::json& document, const std::string& path);
 
 // A .glb starts with "glTF" and a version; throws vct::Error naming `path` for any version but 2.

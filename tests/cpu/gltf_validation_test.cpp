@@ -355,7 +355,12 @@ TEST(GltfValidation, IndexBeyondThirtyTwoBitsIsReportedAsWritten) {
     gltf.document["scenes"][0]["nodes"] = {-3000000000LL};
     expectRefused(gltf, "scenes[0].nodes[0] is -3000000000, outside the 32-bit range");
     gltf = test::triangleScene();
-    gltf.document["extras"] = {{"serial", 9000000000u}};  // the user's own data: not an index
+    gltf.document["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 4294967297u;
+    expectRefused(gltf, "meshes[0].primitives[0].attributes.NORMAL is 4294967297, outside the 32-bit range");
+    // Numbers that are not indices may be any integer: the user's own data, a position.
+    gltf = test::triangleScene();
+    gltf.document["extras"] = {{"serial", 9000000000u}};
+    gltf.document["nodes"][0]["translation"] = {3000000000u, 0, 0};
     TempFolder folder;
     EXPECT_EQ(loadError(gltf.writeGltf(folder, "scene").string()), "");
 }
