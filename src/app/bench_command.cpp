@@ -18,6 +18,7 @@
 #include "bench/measure.h"
 #include "bench/report.h"
 #include "error.h"
+#include "io/temporary_files.h"
 #include "render/camera.h"
 #include "render/presets.h"
 #include "render/renderer_limits.h"
@@ -95,17 +96,26 @@ int runBench(const std::vector<std::string>& rawArguments) {
     info.height = imageSettings.image.height;
     info.frames = options.frames;
     info.warmupFrames = options.warmupFrames;
+    // The run's files are written together at the end (temporary_files.h): an interrupted run leaves
+    // the previous run's set as it was, never new bench files beside an old failure_modes.json.
+    std::vector<std::pair<std::string, std::string>> outputs;
+    const auto writeOutputs = [&] {
+        writeFilesAtomically(outputs);
+        for (const auto& output : outputs) std::printf("wrote %s\n", output.first.c_str());
+        outputs.clear();
+    };
     const auto measureComparison = [&] {
         const std::optional<bench::References> references =
             bench::loadReferences(referenceDir, "cornell-sun", imageSettings.image.width, imageSettings.image.height);
         const bench::ComparisonReport report =
             bench::measureComparison(context, references ? &*references : nullptr, imageSettings.image.width,
                                      imageSettings.image.height, options);
-        writeFileAtomically(outDir + "/comparison.json", bench::comparisonJson(report));
-        std::printf("\n%swrote %s/comparison.json\n", bench::comparisonText(report).c_str(), outDir.c_str());
+        outputs.emplace_back(outDir + "/comparison.json", bench::comparisonJson(report));
+        std::printf("\n%s", bench::comparisonText(report).c_str());
     };
     if (arguments.has("comparison")) {
         measureComparison();
+        writeOutputs();
         if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
         return 0;
     }
@@ -147,14 +157,14 @@ int runBench(const std::vector<std::string>& rawArguments) {
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     const std::vector<bench::SettingSummary> summary = bench::summarize(measurements);
-    writeFileAtomically(outDir + "/bench.csv", bench::toCsv(measurements));
-    writeFileAtomically(outDir + "/bench.json", bench::toJson(measurements, summary, info));
-    writeFileAtomically(outDir + "/bench.svg", bench::toSvg(summary, info));
+    outputs.emplace_back(outDir + "/bench.csv", bench::toCsv(measurements));
+    outputs.emplace_back(outDir + "/bench.json", bench::toJson(measurements, summary, info));
+    outputs.emplace_back(outDir + "/bench.svg", bench::toSvg(summary, info));
     std::printf(
         "\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
         "luminance / reference) geometric means\n%s",
         bench::summaryTable(summary).c_str());
-    std::printf("wrote %s/bench.csv, bench.json, bench.svg in %.0f s\n", outDir.c_str(), info.seconds);
+    std::printf("measured in %.0f s\n", info.seconds);
     if (!arguments.has("quick") && !arguments.has("no-failure-modes")) {
         // With the preset being measured, else `balanced`.
         const std::string presetName = arguments.text("preset", "balanced");
@@ -166,16 +176,19 @@ int runBench(const std::vector<std::string>& rawArguments) {
             context, settings,
             cornellReferences && cornellReferences->indirectOneBounce ? &*cornellReferences->indirectOneBounce
                                                                       : nullptr);
-        writeFileAtomically(outDir + "/failure_modes.json", bench::failureModesJson(report));
-        std::printf("\n%swrote %s/failure_modes.json\n", bench::failureModesText(report).c_str(), outDir.c_str());
+        outputs.emplace_back(outDir + "/failure_modes.json", bench::failureModesJson(report));
+        std::printf("\n%s", bench::failureModesText(report).c_str());
         for (const bench::ResolutionLuminance& r : report.drift)
-            if (!r.finite)
+            if (!r.finite) {
+                writeOutputs();  // what was measured, with the failure modes that show the problem
                 throw Error("the failure-mode run gave non-finite pixels at " + std::to_string(r.voxelResolution) +
                             "³ voxels");
+            }
     }
     if (!arguments.has("quick") && !arguments.has("preset") && !arguments.has("scenes") &&
         !arguments.has("no-comparison"))
         measureComparison();
+    writeOutputs();
     for (const bench::Measurement& m : measurements)
         if (!m.imagesFinite)
             throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");

@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "error.h"
+#include "io/temporary_files.h"
 
 static void printUsage() {
     std::printf(
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
         printUsage();
         return 1;
     }
+    vct::installTemporaryFileCleanup();  // a signal leaves no OUT.tmp.PID behind
     const std::string command = argv[1];
     const std::vector<std::string> arguments(argv + 2, argv + argc);
     try {

@@ -125,7 +125,9 @@ std::vector<Option> makeSharedOptions() {
         {"camera-target", "x,y,z", "the point the camera looks at"},
         {"fov", "DEGREES", "vertical field of view"},
         {"light-dir", "x,y,z", "direction the sun's light travels (adds a sun if the scene has none)"},
-        {"light-intensity", "E", "that sun's illuminance (default 3)"},
+        {"light-intensity", "E",
+         "illuminance (lux) of the scene's first sun, or of the one --light-dir adds (default 3); "
+         "refused without --light-dir if the scene has no sun"},
         {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},
         {"validate", "", "enable the Khronos validation layer"},
         {"strict", "", "treat scene warnings (e.g. a missing texture) as errors"},

@@ -36,11 +36,20 @@ void applyCameraAndLightOverrides(const Arguments& arguments, Scene& scene) {
         aimCamera(camera, position.value_or(camera.position), target.value_or(camera.position + camera.forward));
     if (arguments.has("fov")) camera.yfov = glm::radians(arguments.number("fov", 45.0f, 1.0f, 179.0f));
 
-    if (const std::optional<glm::vec3> direction = arguments.vector3("light-dir")) {
+    // --light-intensity sets the scene's first sun, or the one --light-dir adds; a scene without a
+    // sun and no --light-dir has nothing it could set, which is said rather than ignored.
+    Light* sun = nullptr;
+    for (Light& light : scene.lights)
+        if (light.type == LightType::Directional) sun = sun ? sun : &light;
+    const std::optional<glm::vec3> direction = arguments.vector3("light-dir");
+    if (!direction && arguments.has("light-intensity")) {
+        if (!sun)
+            throw Error("--light-intensity sets the illuminance of a sun, and scene '" + scene.name +
+                        "' has none: give --light-dir too to add one");
+        sun->intensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
+    }
+    if (direction) {
         if (glm::length(*direction) < 1e-6f) throw Error("--light-dir must not be the zero vector");
-        Light* sun = nullptr;
-        for (Light& light : scene.lights)
-            if (light.type == LightType::Directional) sun = sun ? sun : &light;
         if (!sun) {
             scene.lights.push_back(Light{});
             sun = &scene.lights.back();

@@ -12,30 +12,14 @@
 #include <sstream>
 
 #include "error.h"
+#include "io/temporary_files.h"
 #include "tone_curve.h"
 
 namespace vct {
 
 static_assert(std::endian::native == std::endian::little, "PFM writing assumes a little-endian host");
 
-void writeFileAtomically(const std::string& path, const std::string& bytes) {
-    const std::string temporary = path + ".tmp." + std::to_string(getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("cannot create '" + temporary + "': " + std::strerror(errno));
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        out.flush();
-        if (!out) {
-            std::remove(temporary.c_str());
-            throw Error("cannot write '" + temporary + "': " + std::strerror(errno));
-        }
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::string reason = std::strerror(errno);
-        std::remove(temporary.c_str());
-        throw Error("cannot rename '" + temporary + "' to '" + path + "': " + reason);
-    }
-}
+void writeFileAtomically(const std::string& path, const std::string& bytes) { writeFilesAtomically({{path, bytes}}); }
 
 void writePfm(const std::string& path, const Image& image) {
     std::string bytes = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";

@@ -2,7 +2,7 @@
 //
 // Images in memory are RGB float, rows top-to-bottom (row 0 is the top of the picture).
 // Files are written to a temporary file beside the target and renamed, so an interrupted
-// run never leaves a truncated file or clobbers a good one.
+// run never leaves a truncated file or clobbers a good one, nor (temporary_files.h) a temporary file.
 #pragma once
 
 #include <cstdint>
@@ -31,7 +31,8 @@ void writePng(const std::string& path, const Image& image, float exposure = 1.0f
 // nothing, for an image holding NaN or infinity (a render gone wrong must not pass for an image).
 void writeImage(const std::string& path, const Image& image, float exposure = 1.0f);
 
-// Writes `bytes` to `path` through a temporary file and an atomic rename.
+// Writes `bytes` to `path` through a temporary file and an atomic rename; the temporary file is
+// removed on a signal (temporary_files.h).
 void writeFileAtomically(const std::string& path, const std::string& bytes);
 
 }  // namespace vct

@@ -345,10 +345,10 @@ uint64_t Renderer::deviceMemoryBytes() const {
              &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps})
         bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
-    for (const Buffer* buffer :
-         std::initializer_list<const Buffer*>{&sceneGpu_->vertices, &sceneGpu_->indices, &sceneGpu_->triangleMaterials,
-                                              &sceneGpu_->materials, &voxelizePass_->workItems})
+    for (const Buffer* buffer : std::initializer_list<const Buffer*>{
+             &sceneGpu_->vertices, &sceneGpu_->indices, &sceneGpu_->triangleMaterials, &sceneGpu_->materials})
         bytes += buffer->size;
+    for (const VoxelizePass::WorkChunk& chunk : voxelizePass_->workChunks) bytes += chunk.items.size;
     for (const Buffer& accumulation : voxelizePass_->accumulation) bytes += accumulation.size;
     return bytes;
 }

@@ -19,14 +19,6 @@ constexpr uint64_t kShadowTexel = 4;                    // D32
 constexpr uint64_t kSampleBytes = 16 + 8 + 8 + 4 + 16;  // G-buffer position, normal, base colour, depth; shade
 constexpr uint64_t kResolvedPixel = 16;                 // RGBA32F
 
-uint64_t largestDeviceLocalHeap(const VkPhysicalDeviceMemoryProperties& memory) {
-    uint64_t bytes = 0;
-    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
-        if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-            bytes = std::max<uint64_t>(bytes, memory.memoryHeaps[i].size);
-    return bytes;
-}
-
 // The tightest of the limits a 2D render target's side must respect, with its Vulkan name.
 struct SideLimit {
     uint32_t value;
@@ -150,6 +142,14 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
                      scene.materials.size() * sizeof(glsl::GpuMaterial) + 4;  // + the white fallback texture
     for (const Texture& texture : scene.textures) estimate.scene += uint64_t(texture.width) * texture.height * 4;
     return estimate;
+}
+
+uint64_t largestDeviceLocalHeap(const VkPhysicalDeviceMemoryProperties& memory) {
+    uint64_t bytes = 0;
+    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+        if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            bytes = std::max<uint64_t>(bytes, memory.memoryHeaps[i].size);
+    return bytes;
 }
 
 void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceMemoryProperties& memory,

@@ -35,9 +35,12 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
 void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceMemoryProperties& memory,
                          const std::string& deviceName, const Scene& scene, const RenderSettings& settings);
 
-// The storage-buffer limit a scene is loaded against (scene_limits.h).
+uint64_t largestDeviceLocalHeap(const VkPhysicalDeviceMemoryProperties& memory);
+
+// The storage-buffer limit and the decoded-image budget a scene is loaded against (scene_limits.h).
 inline SceneBufferLimits sceneBufferLimits(const GpuContext& context) {
-    return {context.properties.limits.maxStorageBufferRange, context.deviceName()};
+    return {context.properties.limits.maxStorageBufferRange, context.deviceName(),
+            decodedImageBudget(largestDeviceLocalHeap(context.memoryProperties))};
 }
 
 inline void checkRendererLimits(const GpuContext& context, const Scene& scene, const RenderSettings& settings) {

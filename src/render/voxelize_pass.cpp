@@ -1,10 +1,12 @@
 #include "render/voxelize_pass.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "error.h"
 #include "gpu/commands.h"
+#include "render/renderer_limits.h"
 #include "render/voxelize_reference.h"
 
 namespace vct {
@@ -16,6 +18,12 @@ constexpr uint64_t kAccumulationBytesPerVoxel = 4 * glsl::ACCUM_CHANNELS;
 // far above float rounding (~10⁻⁵ voxel), so a voxel the GPU marks is never in a dropped tile.
 constexpr double kTileSlack = 1e-3;
 
+// The work list is held on the host and the device: at most a quarter of the device's largest heap,
+// and never more than this: 2²² items, about a minute of voxelization on lavapipe with 2 cores
+// (13 µs an item for large triangles; milliseconds on a GPU), where realistic scenes need far fewer
+// (the Cornell box at 512³ 0.11 M, the 66 560-triangle terrain at 512³ 0.23 M). A voxelization
+// longer than the GPU timeout (120 s) would fail anyway.
+constexpr uint64_t kMaxWorkItemBytes = uint64_t(32) << 20;
 uint64_t cube(uint32_t resolution) { return uint64_t(resolution) * resolution * resolution; }
 
 bool gridFits(uint64_t heapBytes, uint64_t maxBufferRange, uint32_t resolution) {
@@ -33,10 +41,7 @@ uint64_t voxelizeAccumulationBytes(uint32_t resolution) { return cube(resolution
 
 void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
                          const std::string& deviceName, uint32_t resolution) {
-    uint64_t heapBytes = 0;
-    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
-        if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-            heapBytes = std::max<uint64_t>(heapBytes, memory.memoryHeaps[i].size);
+    const uint64_t heapBytes = largestDeviceLocalHeap(memory);
     if (gridFits(heapBytes, limits.maxStorageBufferRange, resolution)) return;
     uint32_t fitting = resolution;
     while (fitting > 1 && !gridFits(heapBytes, limits.maxStorageBufferRange, fitting)) fitting /= 2;
@@ -67,11 +72,53 @@ std::vector<uint32_t> gpuTriangleOrder(const Scene& scene, const SceneGpu& scene
     return order;
 }
 
+uint64_t voxelizeWorkItemLimit(const VkPhysicalDeviceMemoryProperties& memory) {
+    return std::min(largestDeviceLocalHeap(memory) / 4, kMaxWorkItemBytes) / sizeof(glm::uvec2);
+}
+
+namespace {
+
+Error tooManyWorkItems(const Scene& scene, uint32_t resolution, const std::string& howMany, uint64_t count,
+                       uint64_t maxItems) {
+    return Error("scene '" + scene.name + "': voxelizing its " + std::to_string(scene.triangleCount()) +
+                 " triangles at " + std::to_string(resolution) + "³ takes " + howMany + " " + std::to_string(count) +
+                 " work items (one per triangle and " + std::to_string(glsl::VOXELIZE_TILE) +
+                 "³-voxel tile it crosses), more than the " + std::to_string(maxItems) + " (" +
+                 bytesText(maxItems * sizeof(glm::uvec2)) +
+                 ") the device allows (a quarter of its largest heap, at most " + bytesText(kMaxWorkItemBytes) +
+                 "); a coarser --voxels or fewer large triangles would fit");
+}
+
+// At least as many work items as the scene will need: the tiles a triangle touches cover its
+// projection along its normal's dominant axis, so they number at least that projection's area in
+// tiles (counted for triangles inside the grid only, where clipping removes no area). It takes a
+// pass over the triangles, so a scene far over the bound is refused before any tile is searched.
+uint64_t fewestWorkItems(const Scene& scene, const std::vector<uint32_t>& order, const glsl::VoxelGridParams& grid) {
+    const double tileArea = double(glsl::VOXELIZE_TILE) * glsl::VOXELIZE_TILE;
+    double total = 0.0;
+    for (uint32_t triangleIndex : order) {
+        if (isDegenerateTriangle(scene, triangleIndex)) continue;
+        const TriangleD triangle = gridTriangle(scene, grid, triangleIndex);
+        const glm::dvec3 low = glm::min(triangle[0], glm::min(triangle[1], triangle[2]));
+        const glm::dvec3 high = glm::max(triangle[0], glm::max(triangle[1], triangle[2]));
+        if (glm::any(glm::lessThan(low, glm::dvec3(0.0))) ||
+            glm::any(glm::greaterThan(high, glm::dvec3(grid.resolution.x))))
+            continue;
+        const glm::dvec3 normal = glm::abs(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+        total += std::floor(0.5 * std::max({normal.x, normal.y, normal.z}) / tileArea);
+    }
+    return uint64_t(std::min(total, 1e18));
+}
+
+}  // namespace
+
 std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
-                                               const glsl::VoxelGridParams& grid) {
+                                               const glsl::VoxelGridParams& grid, uint64_t maxItems) {
     const uint32_t resolution = grid.resolution.x;
     const int tile = int(glsl::VOXELIZE_TILE);
     const double halfTile = 0.5 * tile;
+    const uint64_t fewest = fewestWorkItems(scene, order, grid);
+    if (fewest > maxItems) throw tooManyWorkItems(scene, resolution, "at least", fewest, maxItems);
     std::vector<glm::uvec2> items;
     for (uint32_t position = 0; position < order.size(); ++position) {
         if (isDegenerateTriangle(scene, order[position])) continue;
@@ -79,19 +126,45 @@ std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::ve
         const VoxelRange range = triangleVoxelRange(triangle, resolution, kTileSlack);
         if (range.empty()) continue;
         const glm::ivec3 firstTile = range.first / tile, lastTile = range.last / tile;
-        for (int z = firstTile.z; z <= lastTile.z; ++z)
-            for (int y = firstTile.y; y <= lastTile.y; ++y)
-                for (int x = firstTile.x; x <= lastTile.x; ++x) {
-                    const glm::dvec3 center = glm::dvec3(x, y, z) * double(tile) + halfTile;
-                    if (triangleBoxSeparation(triangle, center, halfTile) > kTileSlack) continue;
-                    items.push_back({position, glsl::packCell(glm::uvec3(x, y, z))});
+        // A large triangle's bounding box holds (N/4)³ tiles, but its plane crosses only about (N/4)²
+        // of them: along the normal's dominant axis d, each column of tiles is searched only where
+        // the plane can be within reach of a tile (its separation along the normal at most the slack),
+        // widened by a tile against rounding. The separating-axis test then decides as before.
+        const glm::dvec3 normal = glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]);
+        const glm::dvec3 magnitude = glm::abs(normal);
+        const int d = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : magnitude.y >= magnitude.z ? 1 : 2;
+        const int u = (d + 1) % 3, v = (d + 2) % 3;
+        const double reach = halfTile * (magnitude.x + magnitude.y + magnitude.z) + kTileSlack * glm::length(normal);
+        const size_t firstItem = items.size();
+        glm::ivec3 cell;
+        for (cell[u] = firstTile[u]; cell[u] <= lastTile[u]; ++cell[u])
+            for (cell[v] = firstTile[v]; cell[v] <= lastTile[v]; ++cell[v]) {
+                // |normal · (centre − corner 0)| ≤ reach, solved for the centre's coordinate along d.
+                const double rest = normal[u] * (cell[u] * tile + halfTile - triangle[0][u]) +
+                                    normal[v] * (cell[v] * tile + halfTile - triangle[0][v]);
+                const double a = (-reach - rest) / normal[d], b = (reach - rest) / normal[d];
+                const double low = triangle[0][d] + std::min(a, b), high = triangle[0][d] + std::max(a, b);
+                int first = firstTile[d], last = lastTile[d];
+                if (std::isfinite(low) && std::isfinite(high)) {  // else (a normal that underflowed) all of them
+                    first = std::max(first, int(std::clamp(std::floor((low - halfTile) / tile), -2.0, 2048.0)) - 1);
+                    last = std::min(last, int(std::clamp(std::ceil((high - halfTile) / tile), -2.0, 2048.0)) + 1);
                 }
+                for (cell[d] = first; cell[d] <= last; ++cell[d]) {
+                    const glm::dvec3 center = glm::dvec3(cell) * double(tile) + halfTile;
+                    if (triangleBoxSeparation(triangle, center, halfTile) > kTileSlack) continue;
+                    items.push_back({position, glsl::packCell(glm::uvec3(cell))});
+                }
+            }
+        // The order a z, y, x scan gives (packCell puts z in the high bits), whatever d was.
+        std::sort(items.begin() + long(firstItem), items.end(),
+                  [](const glm::uvec2& a, const glm::uvec2& b) { return a.y < b.y; });
+        if (items.size() > maxItems) throw tooManyWorkItems(scene, resolution, "more than", maxItems, maxItems);
     }
     return items;
 }
 
 VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu,
-                           const glsl::VoxelGridParams& grid)
+                           const glsl::VoxelGridParams& grid, uint64_t maxChunkItems)
     : context_(context) {
     const uint32_t resolution = grid.resolution.x;
     if (resolution == 0 || resolution % glsl::VOXELIZE_TILE != 0 || resolution > 1024 * glsl::VOXELIZE_TILE)
@@ -99,11 +172,8 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
                     std::to_string(resolution));
     checkVoxelizeMemory(context.memoryProperties, context.properties.limits, context.deviceName(), resolution);
 
-    const std::vector<glm::uvec2> items = buildVoxelizeWorkItems(scene, gpuTriangleOrder(scene, sceneGpu), grid);
-    const glm::uvec2 none(0u);
-    workItems =
-        uploadBuffer(context, items.empty() ? &none : items.data(),
-                     std::max<size_t>(items.size(), 1) * sizeof(glm::uvec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    const std::vector<glm::uvec2> items = buildVoxelizeWorkItems(scene, gpuTriangleOrder(scene, sceneGpu), grid,
+                                                                 voxelizeWorkItemLimit(context.memoryProperties));
 
     float largestEmission = 0.0f;
     for (const Material& material : scene.materials)
@@ -114,11 +184,23 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     if (largestEmission > 0.0f)
         params.emission = glm::vec4(glsl::EMISSION_FIXED_MAX / largestEmission,
                                     largestEmission / glsl::EMISSION_FIXED_MAX, 0.0f, 0.0f);
-    // Work items may outnumber the workgroups one dispatch row allows: fold them into rows.
     const uint32_t rowLimit = context.properties.limits.maxComputeWorkGroupCount[0];
-    params.dispatch.x = std::clamp(uint32_t(items.size()), 1u, rowLimit);
-    workGroupRows = (uint32_t(items.size()) + params.dispatch.x - 1) / params.dispatch.x;
     params.dispatch.y = rowLimit;
+
+    // The work items go in chunks, each in a buffer within maxStorageBufferRange and one dispatch of
+    // its own, so no buffer or dispatch grows with the scene (300 000 large triangles at 128³ make
+    // about 10⁹ items, which one buffer and one dispatch did not survive).
+    const uint64_t chunkItems = std::min<uint64_t>(
+        std::max<uint64_t>(maxChunkItems, 1), context.properties.limits.maxStorageBufferRange / sizeof(glm::uvec2));
+    for (uint64_t first = 0; first < items.size(); first += chunkItems) {
+        WorkChunk& chunk = workChunks.emplace_back();
+        chunk.count = uint32_t(std::min<uint64_t>(chunkItems, items.size() - first));
+        chunk.items = uploadBuffer(context, items.data() + first, chunk.count * sizeof(glm::uvec2),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        // Work items may outnumber the workgroups one dispatch row allows: fold them into rows.
+        chunk.groupsPerRow = std::min(chunk.count, rowLimit);
+        chunk.rows = (chunk.count + chunk.groupsPerRow - 1) / chunk.groupsPerRow;
+    }
 
     for (Buffer& channel : accumulation)
         channel = Buffer(context, cube(resolution) * 4,
@@ -156,21 +238,27 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
-    if (params.grid.resolution.w > 0) {
-        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
+    if (!workChunks.empty()) vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
+    for (const WorkChunk& chunk : workChunks) {
         DescriptorPush()
             .buffer(0, sceneGpu.vertices.buffer)
             .buffer(1, sceneGpu.indices.buffer)
             .buffer(2, sceneGpu.triangleMaterials.buffer)
             .buffer(3, sceneGpu.materials.buffer)
-            .buffer(4, workItems.buffer)
+            .buffer(4, chunk.items.buffer)
             .buffers(5, accumulationBuffers())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout);
-        vkCmdPushConstants(commands, voxelizePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
-        vkCmdDispatch(commands, params.dispatch.x, workGroupRows, 1);
+        glsl::VoxelizeParams chunkParams = params;
+        chunkParams.grid.resolution.w = chunk.count;
+        chunkParams.dispatch.x = chunk.groupsPerRow;
+        vkCmdPushConstants(commands, voxelizePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(chunkParams),
+                           &chunkParams);
+        vkCmdDispatch(commands, chunk.groupsPerRow, chunk.rows, 1);
+    }
+    // Chunks only add to the sums (atomics): they need no barrier between them.
+    if (!workChunks.empty())
         memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    }
 
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.pipeline);
     DescriptorPush()

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,15 +32,24 @@ void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const V
 // The order SceneGpu stores the triangles in (stable by material), checked against its material ranges.
 std::vector<uint32_t> gpuTriangleOrder(const Scene& scene, const SceneGpu& sceneGpu);
 
+// The most work items a scene may need on a device (a quarter of its largest heap, at most 32 MiB,
+// 2²² items).
+uint64_t voxelizeWorkItemLimit(const VkPhysicalDeviceMemoryProperties& memory);
+
 // The (triangle, packed tile) work items: for every non-degenerate triangle, the tiles of its voxel
-// bounding box (clipped to the grid) that the triangle may touch. `order[i]` is the scene triangle
-// stored at position i on the GPU; work items name positions.
+// bounding box (clipped to the grid) that the triangle may touch, in z, y, x order. `order[i]` is the
+// scene triangle stored at position i on the GPU; work items name positions. Throws vct::Error
+// naming the scene and the bound when the list would hold more than `maxItems`: at once when the
+// triangles' areas already say so, else as soon as the list grows past it.
 std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
-                                               const glsl::VoxelGridParams& grid);
+                                               const glsl::VoxelGridParams& grid, uint64_t maxItems = UINT32_MAX);
 
 struct VoxelizePass {
-    // `scene` is the CPU copy of what `sceneGpu` holds: the work items are built from it, once.
-    VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu, const glsl::VoxelGridParams& grid);
+    // `scene` is the CPU copy of what `sceneGpu` holds: the work items are built from it, once, and
+    // split into chunks of at most `maxChunkItems` (kMaxChunkItems; tests pass fewer).
+    static constexpr uint64_t kMaxChunkItems = uint64_t(1) << 22;  // 32 MiB a buffer
+    VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu, const glsl::VoxelGridParams& grid,
+                 uint64_t maxChunkItems = kMaxChunkItems);
 
     // Clears the sums, voxelizes, resolves into the scene voxels of `volumes` (albedo and opacity,
     // normal, emission), visible to later compute and fragment shader reads (sampled or storage).
@@ -47,8 +57,13 @@ struct VoxelizePass {
 
     glsl::VoxelizeParams params{};                          // grid.resolution.z = triangles, .w = work items
     std::array<Buffer, glsl::ACCUM_CHANNELS> accumulation;  // uint per voxel each, cleared every record
-    Buffer workItems;                                       // uvec2 (triangle, packed tile)
-    uint32_t workGroupRows = 0;  // the voxelize dispatch is params.dispatch.x × workGroupRows
+    // The work items, uvec2 (triangle, packed tile), in chunks of one buffer and one dispatch each.
+    struct WorkChunk {
+        Buffer items;
+        uint32_t count = 0;
+        uint32_t groupsPerRow = 0, rows = 0;  // the chunk's dispatch is groupsPerRow × rows
+    };
+    std::vector<WorkChunk> workChunks;
     Pipeline voxelizePipeline;
     Pipeline resolvePipeline;
 

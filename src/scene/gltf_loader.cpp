@@ -20,6 +20,7 @@
 #include "error.h"
 #include "scene/file_policy.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_json_checks.h"
 #include "scene/gltf_validate.h"
 #include "scene/load.h"
 
@@ -42,7 +43,14 @@ struct ParseContext {
     std::map<std::string, fs::path> vettedFiles;
     std::set<int> baseColorImages;             // images worth decoding
     std::map<int, std::string> imageProblems;  // why an image has no pixels
-    std::string fatal;                         // a problem found inside a callback that must stop the load
+    // Each distinct image (file, buffer range or data URI) is decoded once, by its first entry;
+    // later entries naming the same bytes point at that one.
+    std::map<std::string, int> firstImageOf;  // what the bytes are → the image entry that decoded them
+    std::map<int, int> sameImageAs;           // image entry → the entry holding its pixels
+    uint64_t decodedImageBudget = 0;          // SceneBufferLimits::maxDecodedImageBytes
+    uint64_t decodedImageBytes = 0;           // RGBA8 bytes of the images decoded (or being decoded) so far
+    std::string sceneFolder;
+    std::string fatal;  // a problem found inside a callback that must stop the load
     const tinygltf::Model* model = nullptr;
 };
 
@@ -101,6 +109,22 @@ bool refuseWrite(std::string* error, const std::string&, const std::vector<unsig
     return false;
 }
 
+// What an image's bytes are, so that entries naming the same ones are decoded once: the file a
+// URI resolves to, the buffer range of a bufferView, or a data URI's own bytes.
+std::string imageIdentity(const tinygltf::Image& image, const unsigned char* bytes, int size,
+                          const ParseContext& context) {
+    if (image.bufferView >= 0) {
+        const tinygltf::BufferView& view = context.model->bufferViews[size_t(image.bufferView)];
+        return "buffer " + std::to_string(view.buffer) + " bytes " + std::to_string(view.byteOffset) + "+" +
+               std::to_string(view.byteLength);
+    }
+    if (!image.uri.empty()) {
+        const auto vetted = context.vettedFiles.find(joinPath(context.sceneFolder, tinygltfUrlDecode(image.uri)));
+        if (vetted != context.vettedFiles.end()) return "file " + vetted->second.string();
+    }
+    return "bytes " + std::string(reinterpret_cast<const char*>(bytes), size > 0 ? size_t(size) : 0);
+}
+
 // Decodes a base colour image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
 // is noted for the loader to report as a warning; only a range the file does not hold stops the load.
 bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
@@ -119,6 +143,11 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         }
     }
     if (!context.baseColorImages.count(imageIndex)) return true;  // not used as base colour: not decoded
+    const auto [first, isNew] = context.firstImageOf.emplace(imageIdentity(*image, bytes, size, context), imageIndex);
+    if (!isNew) {
+        context.sameImageAs[imageIndex] = first->second;
+        return true;
+    }
     const std::string name = image->uri.empty() ? "the embedded image" : "'" + image->uri + "'";
     int width = 0, height = 0, channels = 0;
     if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
@@ -130,6 +159,17 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
                                             ", larger than " + std::to_string(kMaxImageSide) + " on a side";
         return true;
     }
+    // The header says what decoding will take: refuse before decoding when the scene's images
+    // would exceed the budget (a 65 KB PNG can hold 8192² pixels, 256 MiB decoded).
+    const uint64_t decodedBytes = uint64_t(width) * uint64_t(height) * 4;
+    if (decodedBytes > context.decodedImageBudget - std::min(context.decodedImageBudget, context.decodedImageBytes)) {
+        context.fatal = context.file + ": " + at("images", size_t(imageIndex)) + " (" + name + ", " +
+                        std::to_string(width) + "×" + std::to_string(height) + ") would bring the decoded images to " +
+                        bytesText(context.decodedImageBytes + decodedBytes) + ", over the budget of " +
+                        bytesText(context.decodedImageBudget) + " for one scene's images";
+        return false;
+    }
+    context.decodedImageBytes += decodedBytes;
     stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
     if (!pixels) {
         context.imageProblems[imageIndex] = name + " cannot be decoded: " + stbi_failure_reason();
@@ -157,32 +197,6 @@ std::string jsonText(const std::vector<uint8_t>& bytes, bool binary) {
     return std::string(bytes.begin() + 20, bytes.begin() + 20 + chunkLength);
 }
 
-// JSON nested deeper than this is refused before any parser sees it: tinygltf converts nested
-// values recursively, and about 20 000 levels (in `extras`, say) overflow the stack, where 10 000
-// still load. Real glTF files nest a few dozen levels.
-constexpr size_t kMaxJsonDepth = 1000;
-
-void checkJsonNesting(const std::string& text, const std::string& path) {
-    size_t depth = 0;
-    bool inString = false, escaped = false;
-    for (size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (escaped) escaped = false;
-            else if (c == '\\') escaped = true;
-            else if (c == '"') inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth)
-                throw Error(path + ": the JSON nests more than " + std::to_string(kMaxJsonDepth) +
-                            " levels deep (at byte " + std::to_string(i) + "), more than this loader accepts");
-        } else if ((c == ']' || c == '}') && depth > 0) {
-            --depth;
-        }
-    }
-}
-
 // The member `key` of a JSON object, or null (a const operator[] on a missing key is undefined).
 const nlohmann::json* member(const nlohmann::json* object, const char* key) {
     if (!object || !object->is_object()) return nullptr;
@@ -192,8 +206,7 @@ const nlohmann::json* member(const nlohmann::json* object, const char* key) {
 
 // Step 1: applies the file policy to every buffer and image URI before tinygltf sees the file.
 // A refused buffer stops the load; a refused image becomes a missing image (a warning).
-void vetUris(const std::string& text, const fs::path& sceneFolder, ParseContext& context) {
-    const nlohmann::json document = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseContext& context) {
     if (!document.is_object()) return;  // tinygltf reports broken JSON with its own message
     auto vet = [&](const char* list, bool required) {
         const auto found = document.find(list);
@@ -253,6 +266,7 @@ std::vector<uint8_t> readSceneFile(const std::string& path, uint64_t maxFileByte
 struct Parsed {
     tinygltf::Model model;
     std::map<int, std::string> imageProblems;  // why an image has no pixels
+    std::map<int, int> sameImageAs;            // image entry → the entry that decoded the same bytes
 };
 
 // Steps 1 and 2.
@@ -262,15 +276,22 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
 
     ParseContext context;
     context.file = path;
+    context.sceneFolder = sceneFolder.string();
+    context.decodedImageBudget = options.bufferLimits.maxDecodedImageBytes;
     context.policy.maxFileBytes = options.maxFileBytes;
     std::error_code error;
     context.policy.root = options.allowedRoot.empty() ? sceneFolder : fs::canonical(options.allowedRoot, error);
     if (error) throw Error(path + ": the allowed folder '" + options.allowedRoot + "' " + error.message());
 
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    if (binary) checkGlbVersion(bytes, path);
     const std::string json = jsonText(bytes, binary);
     checkJsonNesting(json, path);
-    vetUris(json, sceneFolder, context);
+    {
+        const nlohmann::json document = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+        checkIntegerRanges(document, path);
+        vetUris(document, sceneFolder, context);
+    }
 
     Parsed result;
     tinygltf::Model& model = result.model;
@@ -293,6 +314,7 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
                     ": not a valid glTF file: " + (errors.empty() ? std::string("tinygltf gave no reason") : errors));
     }
     result.imageProblems = std::move(context.imageProblems);
+    result.sameImageAs = std::move(context.sameImageAs);
     return result;
 }
 
@@ -300,6 +322,7 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
 struct Converter {
     const tinygltf::Model& model;
     const std::map<int, std::string>& imageProblems;
+    const std::map<int, int>& sameImageAs;
     const LoadOptions& options;
     Scene& scene;
     std::map<int, int> sceneTextureOfImage;  // glTF image → Scene::textures index or -1
@@ -322,8 +345,10 @@ struct Converter {
 
     int baseColorTexture(const std::string& materialPath, int textureIndex) {
         if (textureIndex < 0) return -1;
-        const int imageIndex = model.textures[size_t(textureIndex)].source;
-        if (imageIndex < 0) return -1;
+        const int source = model.textures[size_t(textureIndex)].source;
+        if (source < 0) return -1;
+        const auto same = sameImageAs.find(source);
+        const int imageIndex = same != sameImageAs.end() ? same->second : source;  // decoded once, shared
         const auto known = sceneTextureOfImage.find(imageIndex);
         if (known != sceneTextureOfImage.end()) return known->second;
 
@@ -609,7 +634,7 @@ Scene load(const std::string& path, const LoadOptions& options) {
 
     Scene scene;
     scene.name = path;
-    Converter converter{parsed.model, parsed.imageProblems, options, scene};
+    Converter converter{parsed.model, parsed.imageProblems, parsed.sameImageAs, options, scene};
     converter.warnAboutExtensions();
     converter.convertMaterials();
     converter.convertNodes();

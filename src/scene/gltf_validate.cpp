@@ -311,7 +311,7 @@ struct Validator {
     // against the buffer limits before anything is read: a file of a few hundred bytes can name
     // 2²⁸ vertices, and reading them would take about 86 bytes each.
     void checkGeometryFits(const SceneBufferLimits& limits) const {
-        uint64_t vertices = 0, indices = 0;
+        uint64_t vertices = 0, indices = 0, verticesInFile = 0;
         const auto add = [](uint64_t& total, uint64_t more) {
             total = more > UINT64_MAX - total ? UINT64_MAX : total + more;
         };
@@ -336,10 +336,11 @@ struct Validator {
                                                                                          : 0;
                 // Without normals every triangle gets three vertices of its own (flat shading).
                 add(vertices, primitive.attributes.count("NORMAL") ? positions : 3 * triangles);
+                add(verticesInFile, positions);
                 add(indices, 3 * triangles);
             }
         }
-        checkSceneBufferFits(file + ": ", vertices, sizeof(glsl::GpuVertex), "vertices", limits);
+        checkSceneBufferFits(file + ": ", vertices, sizeof(glsl::GpuVertex), "vertices", limits, verticesInFile);
         checkSceneBufferFits(file + ": ", indices, sizeof(uint32_t), "triangle corners (indices)", limits);
     }
 

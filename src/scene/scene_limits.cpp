@@ -16,17 +16,20 @@ std::string bytesText(uint64_t bytes) {
 }
 
 void checkSceneBufferFits(const std::string& prefix, uint64_t count, uint64_t elementBytes, const std::string& what,
-                          const SceneBufferLimits& limits) {
+                          const SceneBufferLimits& limits, uint64_t countInFile) {
     const uint64_t range = limits.maxBufferBytes;
     // Counts from a file can be anything: compare without overflowing.
     const bool fits = count <= UINT32_MAX && count <= range / elementBytes;
     if (fits) return;
     const std::string needed =
         count <= UINT64_MAX / elementBytes ? bytesText(count * elementBytes) : "more than 16 EiB";
-    throw Error(prefix + "its " + std::to_string(count) + " " + what + " need " + needed +
-                " in one storage buffer, more than " + limits.deviceName + "'s maxStorageBufferRange of " +
-                bytesText(range) + "; at most " + std::to_string(std::min<uint64_t>(range / elementBytes, UINT32_MAX)) +
-                " " + what + " fit");
+    const std::string counted = countInFile == 0 || countInFile == count
+                                    ? std::to_string(count) + " " + what
+                                    : std::to_string(countInFile) + " " + what + " (" + std::to_string(count) +
+                                          " once each triangle has its own)";
+    throw Error(prefix + "its " + counted + " need " + needed + " in one storage buffer, more than " +
+                limits.deviceName + "'s maxStorageBufferRange of " + bytesText(range) + "; at most " +
+                std::to_string(std::min<uint64_t>(range / elementBytes, UINT32_MAX)) + " " + what + " fit");
 }
 
 }  // namespace vct

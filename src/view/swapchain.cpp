@@ -1,6 +1,7 @@
 #include "view/swapchain.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "error.h"
 #include "gpu/vk_check.h"
@@ -40,6 +41,16 @@ const char* presentModeName(VkPresentModeKHR mode) {
     }
 }
 
+VkExtent2D fitWindowExtent(VkExtent2D window, uint32_t maxSide, uint64_t maxPixels) {
+    double scale = 1.0;
+    scale = std::min(scale, double(maxSide) / double(std::max(window.width, window.height)));
+    const double pixels = double(window.width) * double(window.height);
+    if (pixels * scale * scale > double(maxPixels)) scale = std::sqrt(double(maxPixels) / pixels);
+    if (scale >= 1.0) return window;
+    return {std::clamp(uint32_t(double(window.width) * scale), 1u, maxSide),
+            std::clamp(uint32_t(double(window.height) * scale), 1u, maxSide)};
+}
+
 Swapchain::Swapchain(GpuContext& context, VkSurfaceKHR surface, VkExtent2D wanted, bool vsync, VkSwapchainKHR previous)
     : device_(context.device) {
     VkBool32 supported = VK_FALSE;
@@ -50,14 +61,16 @@ Swapchain::Swapchain(GpuContext& context, VkSurfaceKHR surface, VkExtent2D wante
     const VkSurfaceFormatKHR surfaceFormat = chooseFormat(context.physicalDevice, surface);
     format = surfaceFormat.format;
     presentMode = choosePresentMode(context.physicalDevice, surface, vsync);
-    // A current extent of 0xFFFFFFFF means the window takes whatever size the swapchain has.
+    // A current extent of 0xFFFFFFFF means the window takes whatever size the swapchain has. A
+    // window larger than `wanted` (what the device can draw) gets a smaller swapchain, which the
+    // limits allow, until the window has shrunk too.
+    extent = wanted;
     if (capabilities.currentExtent.width != UINT32_MAX) {
-        extent = capabilities.currentExtent;
-    } else {
-        extent.width = std::clamp(wanted.width, capabilities.minImageExtent.width, capabilities.maxImageExtent.width);
-        extent.height =
-            std::clamp(wanted.height, capabilities.minImageExtent.height, capabilities.maxImageExtent.height);
+        extent.width = std::min(extent.width, capabilities.currentExtent.width);
+        extent.height = std::min(extent.height, capabilities.currentExtent.height);
     }
+    extent.width = std::clamp(extent.width, capabilities.minImageExtent.width, capabilities.maxImageExtent.width);
+    extent.height = std::clamp(extent.height, capabilities.minImageExtent.height, capabilities.maxImageExtent.height);
     minImageCount = capabilities.minImageCount + 1;
     if (capabilities.maxImageCount > 0) minImageCount = std::min(minImageCount, capabilities.maxImageCount);
     canCopyFrom = (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;

@@ -12,7 +12,9 @@ namespace vct {
 class Swapchain {
 public:
     // vsync = FIFO (every implementation has it); otherwise MAILBOX, else IMMEDIATE, else FIFO.
-    // `previous` (may be null) is handed to the driver so it can reuse its images.
+    // `previous` (may be null) is handed to the driver so it can reuse its images. The extent is the
+    // surface's current one (or `wanted` where the surface lets the swapchain decide), no larger than
+    // `wanted`, within the surface's limits.
     Swapchain(GpuContext& context, VkSurfaceKHR surface, VkExtent2D wanted, bool vsync, VkSwapchainKHR previous);
     ~Swapchain();
     Swapchain(const Swapchain&) = delete;
@@ -35,5 +37,11 @@ private:
 };
 
 const char* presentModeName(VkPresentModeKHR mode);
+
+// The largest window size, no larger than `window`, that the viewer can draw: each side at most
+// `maxSide` (the device's maxImageDimension2D), and at most `maxPixels` pixels (what the device's
+// memory allows for the swapchain and the render targets), keeping the window's aspect ratio.
+// A window of 100000² (X wraps it to 34464²) asked for 14 GB of swapchain images on lavapipe.
+VkExtent2D fitWindowExtent(VkExtent2D window, uint32_t maxSide, uint64_t maxPixels);
 
 }  // namespace vct

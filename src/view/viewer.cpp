@@ -81,6 +81,7 @@ private:
     void buildRenderer();
     void recreateSwapchain();
     void resizeRenderer();
+    VkExtent2D drawableExtent(VkExtent2D window) const;
     void drawFrame(bool drawUi, const std::string& screenshotPath);
     void writeScreenshot(const Buffer& pixels, const std::string& path);
     UiFacts facts() const;
@@ -106,7 +107,9 @@ private:
     Camera camera_;
     Camera lastRenderedCamera_;
     CameraControl cameraControl_;
-    VkExtent2D requestedExtent_{};
+    VkExtent2D requestedExtent_{};   // the swapchain's size: the window's, or what the device can draw
+    VkExtent2D shownFramebuffer_{};  // the window's framebuffer size when the swapchain was made
+    static constexpr uint64_t kSwapchainImagesAtMost = 4;
     bool swapchainStale_ = false;
     bool shownVsync_ = true;
     float shownRenderScale_ = 1.0f;
@@ -171,10 +174,33 @@ Viewer::Viewer(ViewerOptions options)
     if (softwarePreset) std::printf("vct view: %s\n", state_.notice.c_str());
 }
 
+// The largest window the viewer draws: each side within maxImageDimension2D, and the swapchain images
+// and the render targets at the render scale within a quarter of the device's memory (lavapipe's
+// 2 GiB: about 4000² at half scale). A larger window is asked to shrink, and is drawn at that size
+// meanwhile; the scene is kept.
+VkExtent2D Viewer::drawableExtent(VkExtent2D window) const {
+    RenderSettings perPixel = state_.settings;
+    perPixel.image.width = perPixel.image.height = std::max(1u, uint32_t(std::lround(1024 * state_.renderScale)));
+    const uint64_t targetBytes = estimateRendererMemory(Scene{}, perPixel).imageTargets;
+    const uint64_t bytesPerWindowPixel = kSwapchainImagesAtMost * 4 + targetBytes / (1024 * 1024) + 1;
+    const uint64_t maxPixels = largestDeviceLocalHeap(context_->memoryProperties) / 4 / bytesPerWindowPixel;
+    return fitWindowExtent(window, context_->properties.limits.maxImageDimension2D, maxPixels);
+}
+
 void Viewer::recreateSwapchain() {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.handle, &width, &height);
-    requestedExtent_ = {uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1))};
+    shownFramebuffer_ = {uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1))};
+    requestedExtent_ = drawableExtent(shownFramebuffer_);
+    if (requestedExtent_.width != shownFramebuffer_.width || requestedExtent_.height != shownFramebuffer_.height) {
+        state_.notice = "the window (" + std::to_string(shownFramebuffer_.width) + "x" +
+                        std::to_string(shownFramebuffer_.height) + ") is larger than " + context_->deviceName() +
+                        " can draw; drawn at " + std::to_string(requestedExtent_.width) + "x" +
+                        std::to_string(requestedExtent_.height);
+        std::printf("vct view: %s\n", state_.notice.c_str());
+        glfwSetWindowSizeLimits(window_.handle, 1, 1, int(requestedExtent_.width), int(requestedExtent_.height));
+        glfwSetWindowSize(window_.handle, int(requestedExtent_.width), int(requestedExtent_.height));
+    }
     if (swapchain_) VK_CHECK(vkDeviceWaitIdle(context_->device));
     const VkSwapchainKHR previous = swapchain_ ? swapchain_->swapchain : VK_NULL_HANDLE;
     auto replacement =
@@ -267,7 +293,14 @@ void Viewer::applyScript() {
         } else if (event.action == "scroll") {
             input_.scroll += parseNumber(event, 0);
         } else if (event.action == "resize") {
-            glfwSetWindowSize(window_.handle, int(parseNumber(event, 0)), int(parseNumber(event, 1)));
+            // X refuses a zero size (BadValue, which ends the process): a window resized to nothing
+            // is minimised instead, and waits. Sizes past what X carries (2¹⁶) are kept to it.
+            const double width = parseNumber(event, 0), height = parseNumber(event, 1);
+            if (width < 1.0 || height < 1.0) glfwIconifyWindow(window_.handle);
+            else {
+                if (glfwGetWindowAttrib(window_.handle, GLFW_ICONIFIED)) glfwRestoreWindow(window_.handle);
+                glfwSetWindowSize(window_.handle, int(std::min(width, 65535.0)), int(std::min(height, 65535.0)));
+            }
         } else if (event.action == "iconify") {
             glfwIconifyWindow(window_.handle);
         } else if (event.action == "restore") {
@@ -547,7 +580,7 @@ bool Viewer::loopIteration() {
         else glfwWaitEventsTimeout(0.02);
         return true;
     }
-    if (swapchainStale_ || uint32_t(width) != requestedExtent_.width || uint32_t(height) != requestedExtent_.height)
+    if (swapchainStale_ || uint32_t(width) != shownFramebuffer_.width || uint32_t(height) != shownFramebuffer_.height)
         recreateSwapchain();
 
     const auto now = std::chrono::steady_clock::now();

@@ -83,6 +83,91 @@ case "$case_name" in
     status=$?
     [ "$status" -eq 124 ] || fail "exit code $status: the render was not still running after 3 s"
     echo "ok: interrupted after 3 s" ;;
+  interrupted-while-writing)
+    # SIGTERM while the image is being written: the temporary file goes, the earlier image stays.
+    # The test makes OUT.tmp.PID a FIFO it reads a little of, so the render is inside the write
+    # (a 128×128 PFM is 196 KB, more than a pipe holds) when the signal comes.
+    out="$work/out.pfm"
+    printf 'an earlier image\n' >"$out"
+    cp "$out" "$work/expected-pfm"
+    "$vct" render --width 128 --height 128 --voxels 32 --shadow-map 256 --out "$out" >"$work/stdout" 2>"$work/stderr" &
+    pid=$!
+    fifo="$out.tmp.$pid"
+    mkfifo "$fifo"
+    exec 3<>"$fifo"
+    timeout 90 head -c 1000 <&3 >/dev/null || fail "the render never wrote its image"
+    kill -TERM "$pid"
+    wait "$pid"
+    status=$?
+    exec 3<&-
+    [ "$status" -eq 143 ] || fail "exit status $status, expected 143 (ended by SIGTERM)"
+    [ ! -e "$fifo" ] || fail "the temporary file was left behind"
+    cmp -s "$out" "$work/expected-pfm" || fail "the earlier image was changed"
+    echo "ok: SIGTERM while writing removed $(basename "$fifo") and kept the earlier image" ;;
+  bench-interrupted-keeps-the-earlier-set)
+    # SIGTERM to vct bench after it wrote two of its three temporary files: none of the earlier
+    # files is replaced, no temporary file stays. The third temporary file is a FIFO nobody reads,
+    # so the bench blocks opening it.
+    dir="$work/bench"
+    mkdir "$dir"
+    for file in bench.csv bench.json bench.svg; do printf 'earlier %s\n' "$file" >"$dir/$file"; done
+    "$vct" bench --quick --scenes cornell --frames 1 --warmup 0 --out-dir "$dir" >"$work/stdout" 2>"$work/stderr" &
+    pid=$!
+    mkfifo "$dir/bench.svg.tmp.$pid"
+    for _ in $(seq 600); do [ -e "$dir/bench.json.tmp.$pid" ] && break; sleep 0.2; done
+    [ -e "$dir/bench.json.tmp.$pid" ] || fail "the bench never began writing its files"
+    sleep 0.5
+    kill -TERM "$pid"
+    wait "$pid"
+    status=$?
+    [ "$status" -eq 143 ] || fail "exit status $status, expected 143 (ended by SIGTERM)"
+    for file in bench.csv bench.json bench.svg; do
+      [ "$(cat "$dir/$file")" = "earlier $file" ] || fail "$file was replaced by the interrupted run"
+    done
+    leftovers=$(find "$dir" -name '*.tmp.*' | wc -l)
+    [ "$leftovers" -eq 0 ] || fail "$leftovers temporary files were left behind"
+    echo "ok: the interrupted bench left the earlier set whole" ;;
+  light-intensity-without-a-sun)
+    expect_refusal "\-\-light-intensity sets the illuminance of a sun, and scene 'cornell' has none: give --light-dir" \
+      "${small[@]}" --scene cornell --light-intensity 5 --out "$good" ;;
+  light-intensity-sets-the-scenes-sun)
+    # sun-room has a sun: --light-intensity alone sets it (direct light doubles with it).
+    for intensity in 1 2; do
+      "$vct" render "${small[@]}" --scene sun-room --mode direct --light-intensity "$intensity" \
+        --out "$work/sun$intensity.pfm" >"$work/stdout" 2>"$work/stderr" || fail "the render failed"
+    done
+    cmp -s "$work/sun1.pfm" "$work/sun2.pfm" && fail "--light-intensity was ignored"
+    echo "ok: --light-intensity set sun-room's sun" ;;
+  texture-bomb)
+    # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded): refused
+    # from the headers, before anything is decoded, when they exceed the budget for decoded images.
+    for name in a b; do
+      printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x40\x00\x00\x00\x40\x00\x08\x06\x00\x00\x00\x00\x00\x00\x00' \
+        >"$work/$name.png"
+    done
+    printf '%s' '{"asset":{"version":"2.0"},"images":[{"uri":"a.png"},{"uri":"b.png"}],
+      "textures":[{"source":0},{"source":1}],
+      "materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}},
+                   {"pbrMetallicRoughness":{"baseColorTexture":{"index":1}}}]}' >"$work/bomb.gltf"
+    expect_refusal "bomb.gltf: images\[[01]\] ('[ab].png', 16384×16384) would bring the decoded images to [0-9]* MiB, over the budget of [0-9]* MiB" \
+      "${small[@]}" --scene "$work/bomb.gltf" --out "$good" ;;
+  many-large-triangles)
+    # 300 000 instances of a triangle as large as the scene: about 10⁸ (triangle, tile) work items
+    # at 128³, which crashed lavapipe after two minutes. Their areas alone exceed the voxelizer's
+    # bound, so the scene is refused before any tile is searched.
+    {
+      printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,'
+      printf 'AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],'
+      printf '"bufferViews":[{"buffer":0,"byteLength":36}],'
+      printf '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],"max":[1,1,1]}],'
+      printf '"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":['
+      seq 0 299999 | awk '{ printf "%s{\"mesh\":0,\"translation\":[0,0,%g]}", (NR > 1 ? "," : ""), ($1 % 1000) * 0.0005 }'
+      printf '],"scenes":[{"nodes":['
+      seq -s, 0 299999 | tr -d '\n'
+      printf ']}],"scene":0}'
+    } >"$work/walls.gltf"
+    expect_refusal "scene '.*walls.gltf': voxelizing its 300000 triangles at 128³ takes at least [0-9]* work items" \
+      --width 32 --height 32 --voxels 128 --scene "$work/walls.gltf" --out "$good" ;;
   success-replaces)
     "$vct" render "${small[@]}" --out "$good" >"$work/stdout" 2>"$work/stderr" || fail "render failed"
     head -c 8 "$good" | grep -q PNG || fail "the output is not a PNG"

@@ -434,6 +434,103 @@ TEST(GltfLoader, DecodesTextureEmbeddedInGlb) {
     EXPECT_EQ(scene.textures[0].rgba8, (std::vector<uint8_t>{1, 2, 3, 4}));
 }
 
+// ---- Decompression bombs: decoded bytes are budgeted from the headers, and each image decoded once.
+
+// `count` materials, each with a base colour texture of its own naming image `uris[i % uris.size()]`.
+GltfBuilder manyTexturedMaterials(size_t count, const std::vector<std::string>& uris) {
+    GltfBuilder gltf = test::triangleScene();
+    gltf.document["images"] = json::array();
+    gltf.document["textures"] = json::array();
+    gltf.document["materials"] = json::array();
+    for (size_t i = 0; i < count; ++i) {
+        gltf.document["images"].push_back({{"uri", uris[i % uris.size()]}});
+        gltf.document["textures"].push_back({{"source", i}});
+        gltf.document["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
+    }
+    return gltf;
+}
+
+// A PNG whose header claims width × height but which holds one pixel: what stbi_info reads is all
+// a budget check before decoding may see, and decoding it would fail.
+std::string pngClaiming(uint32_t width, uint32_t height) {
+    std::string png = test::encodePng(1, 1, 4, 8, {1, 2, 3, 4});
+    for (int i = 0; i < 4; ++i) {
+        png[size_t(16 + i)] = char(width >> (24 - 8 * i));
+        png[size_t(20 + i)] = char(height >> (24 - 8 * i));
+    }
+    return png;
+}
+
+TEST(GltfLoader, ImageNamedByManyEntriesIsDecodedOnce) {
+    // 64 entries name one 64×64 PNG (16 KiB decoded), under a budget of 20 KiB: decoded 64 times
+    // they would need 1 MiB. A data URI named twice and a GLB buffer view named twice likewise.
+    TempFolder folder;
+    std::vector<uint16_t> samples(64 * 64 * 4, 200);
+    const std::string png = test::encodePng(64, 64, 4, 8, samples);
+    folder.write("same.png", png);
+    LoadOptions options;
+    options.bufferLimits.maxDecodedImageBytes = 20 << 10;
+    for (const std::string& uri : {std::string("same.png"), "data:image/png;base64," + test::base64(png)}) {
+        GltfBuilder gltf = manyTexturedMaterials(64, {uri});
+        const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string(), options);
+        ASSERT_EQ(scene.textures.size(), 1u);
+        EXPECT_EQ(scene.textures[0].rgba8.size(), 64u * 64 * 4);
+        ASSERT_GE(scene.materials.size(), 64u);  // and the default material of the untextured triangle
+        for (size_t i = 0; i < 64; ++i) EXPECT_EQ(scene.materials[i].baseColorTexture, 0);
+        EXPECT_TRUE(scene.warnings.empty());
+    }
+    GltfBuilder gltf = manyTexturedMaterials(8, {"unused"});
+    const int view = gltf.addBufferView(png.data(), png.size());
+    for (json& image : gltf.document["images"]) image = {{"bufferView", view}, {"mimeType", "image/png"}};
+    const Scene scene = loadGltf(gltf.writeGlb(folder, "scene").string(), options);
+    EXPECT_EQ(scene.textures.size(), 1u);
+}
+
+TEST(GltfLoader, DecodedImagesOverTheBudgetAreRefusedFromTheirHeaders) {
+    // Five files of a few dozen bytes whose headers claim 8192² pixels, 256 MiB each decoded: the
+    // fifth would bring the scene's images past the default budget of 1 GiB, and the header says so
+    // before anything is decoded.
+    TempFolder folder;
+    std::vector<std::string> uris;
+    for (int i = 0; i < 5; ++i) {
+        uris.push_back("bomb" + std::to_string(i) + ".png");
+        folder.write(uris.back(), pngClaiming(8192, 8192));
+    }
+    GltfBuilder gltf = manyTexturedMaterials(5, uris);
+    const std::string path = gltf.writeGltf(folder, "scene").string();
+    try {
+        loadGltf(path);
+        FAIL() << "expected vct::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  path +
+                      ": images[4] ('bomb4.png', 8192×8192) would bring the decoded images to 1280 MiB, over the "
+                      "budget of 1024 MiB for one scene's images");
+    }
+    // Real pixels under a small budget: the second distinct 64×64 image (16 KiB each) is one too many.
+    const std::vector<uint16_t> samples(64 * 64 * 4, 100);
+    folder.write("a.png", test::encodePng(64, 64, 4, 8, samples));
+    folder.write("b.png", test::encodePng(64, 64, 4, 8, std::vector<uint16_t>(64 * 64 * 4, 50)));
+    LoadOptions options;
+    options.bufferLimits.maxDecodedImageBytes = 20 << 10;
+    GltfBuilder two = manyTexturedMaterials(2, {"a.png", "b.png"});
+    try {
+        loadGltf(two.writeGltf(folder, "two").string(), options);
+        FAIL() << "expected vct::Error";
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what())
+                      .find("images[1] ('b.png', 64×64) would bring the decoded images to 32 KiB, "
+                            "over the budget of 20 KiB"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
+TEST(GltfLoader, DecodedImageBudgetScalesWithTheDevicesMemory) {
+    EXPECT_EQ(decodedImageBudget(uint64_t(2) << 30), uint64_t(512) << 20);  // a 2 GiB GPU: a quarter
+    EXPECT_EQ(decodedImageBudget(uint64_t(64) << 30), uint64_t(1) << 30);   // at most 1 GiB
+}
+
 TEST(GltfLoader, MissingTextureWarnsAndFallsBackToTheFactor) {
     GltfBuilder gltf = texturedTriangle("missing.png");
     TempFolder folder;

@@ -293,7 +293,8 @@ TEST(GltfValidation, HugeAccessorWithoutBufferViewIsRefusedBeforeAllocating) {
 TEST(GltfValidation, MeshOfMoreVerticesThanABufferTakesIsRefusedFromItsCounts) {
     // 2²⁸ positions of zeros, with no buffer view (so the file is a few hundred bytes), as the
     // mesh's only attribute: without normals every triangle gets vertices of its own, 3 × ⌊2²⁸/3⌋.
-    // Read, they would take about 23 GB; the counts alone refuse them, at once.
+    // Read, they would take about 23 GB; the counts alone refuse them, at once. The sentence gives
+    // the file's count first, then the one the loader would build.
     for (bool sparse : {false, true}) {
         GltfBuilder gltf = test::triangleScene();
         json huge = {{"componentType", 5126}, {"count", 1u << 28}, {"type", "VEC3"}};
@@ -309,7 +310,8 @@ TEST(GltfValidation, MeshOfMoreVerticesThanABufferTakesIsRefusedFromItsCounts) {
         gltf.document["accessors"].push_back(huge);
         gltf.document["meshes"][0]["primitives"][0]["attributes"] = {{"POSITION", 2}};
         expectRefused(gltf,
-                      "its 268435455 vertices need 8192 MiB in one storage buffer, more than a typical GPU's "
+                      "its 268435456 vertices (268435455 once each triangle has its own) need 8192 MiB in one "
+                      "storage buffer, more than a typical GPU's "
                       "maxStorageBufferRange of 2048 MiB; at most 67108864 vertices fit");
     }
 }
@@ -342,6 +344,39 @@ TEST(GltfValidation, DeeplyNestedJsonIsRefusedBeforeParsing) {
     };
     EXPECT_NE(nested(20000).find("the JSON nests more than 1000 levels deep"), std::string::npos) << nested(20000);
     EXPECT_EQ(nested(900), "") << "the root object and 900 arrays are 901 levels";
+}
+
+TEST(GltfValidation, IndexBeyondThirtyTwoBitsIsReportedAsWritten) {
+    // tinygltf reads indices into an int: 2³¹ wrapped to −2³¹ and was reported so.
+    GltfBuilder gltf = test::triangleScene();
+    gltf.document["nodes"][0]["mesh"] = 2147483648u;
+    expectRefused(gltf, "nodes[0].mesh is 2147483648, outside the 32-bit range");
+    gltf = test::triangleScene();
+    gltf.document["scenes"][0]["nodes"] = {-3000000000LL};
+    expectRefused(gltf, "scenes[0].nodes[0] is -3000000000, outside the 32-bit range");
+    gltf = test::triangleScene();
+    gltf.document["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 4294967297u;
+    expectRefused(gltf, "meshes[0].primitives[0].attributes.NORMAL is 4294967297, outside the 32-bit range");
+    // Numbers that are not indices may be any integer: the user's own data, a position.
+    gltf = test::triangleScene();
+    gltf.document["extras"] = {{"serial", 9000000000u}};
+    gltf.document["nodes"][0]["translation"] = {3000000000u, 0, 0};
+    TempFolder folder;
+    EXPECT_EQ(loadError(gltf.writeGltf(folder, "scene").string()), "");
+}
+
+TEST(GltfValidation, GlbOfAVersionOtherThanTwoIsRefused) {
+    for (uint32_t version : {1u, 3u}) {
+        GltfBuilder gltf = test::triangleScene();
+        TempFolder folder;
+        const std::filesystem::path path = gltf.writeGlb(folder, "scene");
+        std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+        file.seekp(4);
+        file.write(reinterpret_cast<const char*>(&version), 4);
+        file.close();
+        expectRefused(path.string(),
+                      "a binary glTF (GLB) of version " + std::to_string(version) + "; only version 2 is supported");
+    }
 }
 
 TEST(GltfValidation, SparseIndexPastTheCountIsRefused) {

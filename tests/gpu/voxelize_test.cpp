@@ -77,13 +77,15 @@ struct VoxelImages {
     std::vector<uint32_t> occupied;  // the occupied-voxel list, packed cells
     glsl::WorkListHeader occupiedDispatch{};
     size_t workItems = 0;
+    size_t chunks = 0;  // buffers and dispatches the work items were split into
     std::vector<PassTime> times;
 };
 
-VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid, int timedRuns = 0) {
+VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid, int timedRuns = 0,
+                          uint64_t maxChunkItems = VoxelizePass::kMaxChunkItems) {
     GpuContext& context = test::gpu();
     SceneGpu sceneGpu(context, scene);
-    VoxelizePass pass(context, scene, sceneGpu, grid);
+    VoxelizePass pass(context, scene, sceneGpu, grid, maxChunkItems);
     VoxelVolumes volumes(context, ResourceSettings{.voxelResolution = grid.resolution.x, .anisotropicVoxels = false});
     GpuTimer timer(context);
     for (int run = 0; run <= timedRuns; ++run)  // run 0 warms up, the last one is timed
@@ -101,6 +103,7 @@ VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid,
     std::memcpy(&images.occupiedDispatch, header.data(), sizeof(images.occupiedDispatch));
     images.occupied = readBufferWords(context, volumes.occupiedVoxels, images.occupiedDispatch.count);
     images.workItems = pass.params.grid.resolution.w;
+    images.chunks = pass.workChunks.size();
     images.times = timer.results();
     return images;
 }
@@ -302,6 +305,96 @@ TEST_F(Voxelize, TriangleLargerThanTheGridIsClippedToIt) {
     EXPECT_GT(gpu.workItems, 0u);
     EXPECT_LT(gpu.workItems, 8u * 8u * 8u / 2u);
     expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
+// The work items as the specification states them: every tile of the triangle's voxel range that
+// the separating-axis test keeps, scanned z, y, x (the builder searches only near the plane).
+std::vector<glm::uvec2> everyTouchedTile(const Scene& scene, const glsl::VoxelGridParams& grid) {
+    std::vector<glm::uvec2> items;
+    for (uint32_t t = 0; t < scene.triangleCount(); ++t) {
+        if (isDegenerateTriangle(scene, t)) continue;
+        const TriangleD triangle = gridTriangle(scene, grid, t);
+        const VoxelRange range = triangleVoxelRange(triangle, grid.resolution.x, 1e-3);
+        if (range.empty()) continue;
+        const glm::ivec3 first = range.first / 4, last = range.last / 4;
+        for (int z = first.z; z <= last.z; ++z)
+            for (int y = first.y; y <= last.y; ++y)
+                for (int x = first.x; x <= last.x; ++x)
+                    if (triangleBoxSeparation(triangle, glm::dvec3(x, y, z) * 4.0 + 2.0, 2.0) <= 1e-3)
+                        items.push_back({t, glsl::packCell(glm::uvec3(x, y, z))});
+    }
+    return items;
+}
+
+TEST(VoxelizeWorkItems, AreEveryTileTheTriangleTouchesFoundNearItsPlaneOnly) {
+    // Random triangles of every size and orientation, large ones past the grid, and axis-aligned ones
+    // (whose plane lies on tile faces).
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> position(-10.0f, 74.0f), size(0.1f, 60.0f);
+    std::vector<TriangleF> triangles;
+    for (int t = 0; t < 400; ++t) {
+        const glm::vec3 center(position(random), position(random), position(random));
+        const float extent = size(random);
+        triangles.push_back({center + extent * randomUnitVector(random), center + extent * randomUnitVector(random),
+                             center + extent * randomUnitVector(random)});
+    }
+    triangles.push_back({glm::vec3(1, 1, 8), glm::vec3(60, 1, 8), glm::vec3(1, 60, 8)});
+    triangles.push_back({glm::vec3(12, -5, -5), glm::vec3(12, 70, -5), glm::vec3(12, -5, 70)});
+    const Scene scene = makeScene(triangles);
+    std::vector<uint32_t> order(scene.triangleCount());
+    std::iota(order.begin(), order.end(), 0u);
+    EXPECT_EQ(buildVoxelizeWorkItems(scene, order, exactGrid(64)), everyTouchedTile(scene, exactGrid(64)));
+}
+
+TEST(VoxelizeWorkItems, MoreThanTheBoundAreRefusedNamingTheSceneAndTheBound) {
+    // 100 triangles across a 64³ grid: each crosses hundreds of tiles.
+    std::vector<TriangleF> triangles(100, {glm::vec3(0, 0, 0), glm::vec3(64, 0, 64), glm::vec3(0, 64, 32)});
+    Scene scene = makeScene(triangles);
+    scene.name = "many-walls.gltf";
+    std::vector<uint32_t> order(scene.triangleCount());
+    std::iota(order.begin(), order.end(), 0u);
+    const size_t needed = buildVoxelizeWorkItems(scene, order, exactGrid(64)).size();
+    EXPECT_GT(needed, 10000u);
+    // Far over the bound: refused from the triangles' areas (each covers 128 tiles in projection),
+    // before any tile is searched; just over it: refused as the list passes it.
+    const std::string prefix = "scene 'many-walls.gltf': voxelizing its 100 triangles at 64³ takes ";
+    for (const auto& [bound, howMany] : {std::pair<uint64_t, std::string>{10000, "at least 12800 work items"},
+                                         std::pair<uint64_t, std::string>{12800, "more than 12800 work items"}}) {
+        try {
+            buildVoxelizeWorkItems(scene, order, exactGrid(64), bound);
+            ADD_FAILURE() << "expected vct::Error for a bound of " << bound;
+        } catch (const Error& error) {
+            EXPECT_EQ(std::string(error.what())
+                          .rfind(prefix + howMany +
+                                     " (one per triangle and 4³-voxel tile it "
+                                     "crosses), more than the " +
+                                     std::to_string(bound),
+                                 0),
+                      0u)
+                << error.what();
+        }
+    }
+    EXPECT_EQ(buildVoxelizeWorkItems(scene, order, exactGrid(64), needed).size(), needed);
+    VkPhysicalDeviceMemoryProperties memory{};
+    memory.memoryHeapCount = 1;
+    memory.memoryHeaps[0] = {VkDeviceSize(1) << 30, VK_MEMORY_HEAP_DEVICE_LOCAL_BIT};
+    EXPECT_EQ(voxelizeWorkItemLimit(memory), (uint64_t(32) << 20) / 8) << "at most 32 MiB";
+    memory.memoryHeaps[0].size = VkDeviceSize(64) << 20;
+    EXPECT_EQ(voxelizeWorkItemLimit(memory), (uint64_t(16) << 20) / 8) << "a quarter of a 64 MiB heap";
+}
+
+TEST_F(Voxelize, WorkItemsSplitIntoChunksGiveTheSameImages) {
+    // Each chunk is a buffer and a dispatch of its own; the sums do not care how the items are split.
+    const Scene scene = loadScene("cornell");
+    const glsl::VoxelGridParams grid = fitVoxelGrid(scene.bounds(), 64);
+    const VoxelImages whole = voxelizeOnGpu(scene, grid);
+    const VoxelImages chunked = voxelizeOnGpu(scene, grid, 0, 97);
+    EXPECT_EQ(whole.chunks, 1u);
+    EXPECT_EQ(chunked.chunks, (whole.workItems + 96) / 97);
+    EXPECT_EQ(chunked.workItems, whole.workItems);
+    EXPECT_EQ(chunked.albedoOpacity, whole.albedoOpacity);
+    EXPECT_EQ(chunked.normal, whole.normal);
+    EXPECT_EQ(chunked.emission, whole.emission);
 }
 
 // 6-connected flood fill through empty voxels from the grid's corner; returns the reached mask.

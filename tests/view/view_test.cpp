@@ -191,6 +191,26 @@ TEST_F(View, ResizingAndMinimisingDoNotCrash) {
     EXPECT_GT(meanValue(png), 20.0);
 }
 
+TEST_F(View, ExtremeResizesKeepTheWindowAndTheScene) {
+    // A zero size (which X refuses with BadValue, ending the process) minimises the window, which
+    // waits; a 100000² window (X carries 16 bits: 65535²) is drawn at what the device can hold, the
+    // window asked to shrink to it, instead of a swapchain of tens of gigabytes.
+    const std::string events = std::string(hidePanels) +
+                               "1 resize 0 0; 4 resize 320 180; 6 screenshot zero.png; 7 resize 100000 100000; "
+                               "10 screenshot huge.png; 11 resize 200 120; 14 screenshot after.png; 15 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    const Png zero = screenshot("zero.png"), huge = screenshot("huge.png"), after = screenshot("after.png");
+    EXPECT_EQ(zero.width, 320) << log;
+    EXPECT_EQ(zero.height, 180);
+    EXPECT_GT(huge.width, 320) << log;
+    EXPECT_LE(huge.width, 16384);
+    EXPECT_EQ(huge.width, huge.height) << "the aspect ratio is kept";
+    EXPECT_NE(log.find("can draw; drawn at"), std::string::npos) << log;
+    EXPECT_EQ(after.width, 200) << log;
+    EXPECT_EQ(after.height, 120);
+    EXPECT_GT(meanValue(after), 20.0) << "the scene is still there";
+}
+
 TEST_F(View, ABrokenDroppedFileKeepsTheSceneAndADroppedSceneLoads) {
     std::ofstream(directory / "broken.gltf") << "{ not json";
     const std::string events = std::string(hidePanels) +
