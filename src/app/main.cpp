@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "error.h"
+#include "io/exit_immediately.h"
 #include "io/temporary_files.h"
 
 static void printUsage() {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
     }
     vct::installTemporaryFileCleanup();  // a signal leaves no OUT.tmp.PID behind
     const std::string command = argv[1];
+    vct::setErrorLinePrefix("vct " + command);
     const std::vector<std::string> arguments(argv + 2, argv + argc);
     try {
         if (command == "render") return vct::runRender(arguments);

@@ -1,15 +1,30 @@
 #include "gpu/commands.h"
 
+#include <cstdio>
+
 #include "gpu/vk_check.h"
+#include "io/exit_immediately.h"
 
 namespace vct {
+namespace {
+
+std::string formatSeconds(float seconds) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g s", double(seconds));
+    return text;
+}
+
+}  // namespace
 
 void waitForFence(GpuContext& context, VkFence fence) {
     const uint64_t timeoutNs = uint64_t(context.fenceTimeoutSeconds * 1e9);
     const VkResult result = vkWaitForFences(context.device, 1, &fence, VK_TRUE, timeoutNs);
+    // The work goes on after the wait gives up, reading and writing memory that unwinding would free
+    // under it: the process ends here instead of throwing.
     if (result == VK_TIMEOUT)
-        throw Error("the GPU (" + context.deviceName() + ") did not finish its work within " +
-                    std::to_string(int(context.fenceTimeoutSeconds)) + " s; it may be stuck");
+        exitImmediately("the GPU (" + context.deviceName() + ") did not finish its work within " +
+                        formatSeconds(context.fenceTimeoutSeconds) +
+                        "; it may be stuck (--gpu-timeout sets the limit)");
     VK_CHECK(result);
 }
 

@@ -31,9 +31,14 @@ std::mutex registration;  // registering threads among themselves; the handler t
 
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
-extern "C" void removeTemporaryFilesAndReraise(int signal) {
+// Async-signal-safe: reads published slots and calls unlink only.
+void unlinkRegistered() {
     for (Slot& slot : slots)
         if (slot.used.load() == 1) unlink(slot.path);
+}
+
+extern "C" void removeTemporaryFilesAndReraise(int signal) {
+    unlinkRegistered();
     // SA_RESETHAND restored the default action; the signal is blocked while this handler runs, so it
     // is delivered, and ends the process, when the handler returns.
     raise(signal);
@@ -53,6 +58,8 @@ void installTemporaryFileCleanup() {
         sigaction(signal, &action, nullptr);
     }
 }
+
+void removeTemporaryFiles() { unlinkRegistered(); }
 
 void registerTemporaryFile(const std::string& path) {
     if (path.size() >= kMaxPath) throw Error("cannot write '" + path + "': the path is too long");

@@ -22,6 +22,9 @@ void installTemporaryFileCleanup();
 void registerTemporaryFile(const std::string& path);
 void unregisterTemporaryFile(const std::string& path);
 
+// Removes every registered file now (the signal handler's work, for exitImmediately).
+void removeTemporaryFiles();
+
 // The paths registered now (for tests).
 std::vector<std::string> registeredTemporaryFiles();
 

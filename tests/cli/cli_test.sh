@@ -83,6 +83,21 @@ case "$case_name" in
     status=$?
     [ "$status" -eq 124 ] || fail "exit code $status: the render was not still running after 3 s"
     echo "ok: interrupted after 3 s" ;;
+  gpu-timeout)
+    # The GPU still working when --gpu-timeout runs out: a clean refusal at once, not a crash when
+    # the stack's buffers are freed under the running work (a 256³ grid is seconds of lavapipe).
+    start=$(date +%s)
+    "$vct" render --scene cornell --voxels 256 --width 64 --height 64 --gpu-timeout 0.1 --out "$good" \
+      >"$work/stdout" 2>"$work/stderr"
+    status=$?
+    if [ "$status" -eq 0 ]; then
+      echo "ok: this device finished within 0.1 s, nothing to check"
+    else
+      [ $(( $(date +%s) - start )) -le 30 ] || fail "the refusal took more than 30 s"
+      expect_refusal "did not finish its work within 0.1 s" --scene cornell --voxels 256 --width 64 --height 64 \
+        --gpu-timeout 0.1 --out "$good"
+      expect_output_untouched
+    fi ;;
   interrupted-while-writing)
     # SIGTERM while the image is being written: the temporary file goes, the earlier image stays.
     # The test makes OUT.tmp.PID a FIFO it reads a little of, so the render is inside the write
