@@ -10,10 +10,12 @@
 namespace vct {
 
 // Records `record` into a fresh command buffer, submits it and waits, with a bounded wait:
-// a GPU that does not finish within context.fenceTimeoutSeconds is a vct::Error, not a hang.
+// a GPU that does not finish within context.fenceTimeoutSeconds ends the process with a clear
+// error (exitImmediately), not a hang.
 void submitAndWait(GpuContext& context, const std::function<void(VkCommandBuffer)>& record);
 
-// Waits for `fence` at most context.fenceTimeoutSeconds; throws a clear error otherwise.
+// Waits for `fence` at most context.fenceTimeoutSeconds; past that the work still runs and owns
+// its memory, so the process ends with a clear error (exitImmediately) instead of unwinding.
 void waitForFence(GpuContext& context, VkFence fence);
 
 // One image layout transition with synchronization2 masks.
