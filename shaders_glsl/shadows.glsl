@@ -2,7 +2,8 @@
 // occluder is near (contact hardening).
 // Requires: shadowViews[] (ShadowView), sunShadowMaps and localShadowMaps (sampler2DArrayShadow),
 // frame (FrameConstants); with SHADOW_BLOCKER_SEARCH defined, also sunShadowDepths and
-// localShadowDepths (sampler2DArray of the same maps, nearest filtering) for the filtered path.
+// localShadowDepths (sampler2DArray of the same maps, nearest filtering) for the filtered path;
+// without it every lookup is one bilinear comparison.
 #ifndef VCT_SHADOWS_GLSL
 #define VCT_SHADOWS_GLSL
 
@@ -58,6 +59,10 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
         return 1.0f;
 
     uint array = uint(view.params.x);
+#ifndef SHADOW_BLOCKER_SEARCH
+    // A shader without the maps' depths (the injection) takes one comparison.
+    return sampleShadowMap(array, vec4(centre.xy, view.params.y, centre.z));
+#else
     if (!filtered) return sampleShadowMap(array, vec4(centre.xy, view.params.y, centre.z));
     vec2 texel = 1.0f / vec2(array == 0u ? textureSize(sunShadowMaps, 0).xy : textureSize(localShadowMaps, 0).xy);
 
@@ -85,7 +90,6 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     // carries that margin to the other taps.
 
     float radius = frame.pcfRadius;
-#ifdef SHADOW_BLOCKER_SEARCH
     // Blockers: texels of the kernel's footprint nearer the light than the receiver's plane there,
     // gathered four at a time over a 3×3 grid of taps. Their mean distance in front of the plane
     // sets the kernel's width; none means fully lit, all of them fully shadowed.
@@ -122,16 +126,6 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
             lit += min(min(stored.x, stored.y), min(stored.z, stored.w)) >= depth ? 1.0f : 0.0f;
         }
     return lit / float((2 * reach + 1) * (2 * reach + 1));
-#else
-    float lit = 0.0f;
-    // 5×5 taps spread over ±radius texels; each tap is itself a bilinear 2×2 comparison.
-    for (int y = -2; y <= 2; ++y)
-        for (int x = -2; x <= 2; ++x) {
-            vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
-            float depth = centre.z + dot(depthGradient, offset);
-            lit += sampleShadowMap(array, vec4(centre.xy + offset, view.params.y, depth));
-        }
-    return lit / 25.0f;
 #endif
 }
 
