@@ -47,8 +47,12 @@ void injectVoxel(ivec3 voxel) {
         vec3 normal = normalLength > 0.25f ? normalSum / normalLength : toLight;
         float cosine = normalLength > 0.25f ? max(dot(normal, toLight), 0.0f) : 0.5f;
         if (cosine <= 0.0f) continue;
-        // The voxel centre can lie behind its surface: look the shadow up one voxel along the normal.
-        vec3 lookup = center + normal * voxelSize;
+        // The voxel centre can lie behind its surface (half a voxel, for a surface along the grid):
+        // look the shadow up half a voxel along the normal. A whole voxel let voxels peek over
+        // nearby occluders, a hill's crest under a low sun (terrain's indirect light 1.18× the
+        // truth, 1.11× now); a quarter left voxels behind their surface in its shadow (the Cornell
+        // box's 0.96 fell to 0.83).
+        vec3 lookup = center + normal * (0.5f * voxelSize);
         float visibility = shadowVisibility(light, lookup, normal, distanceToLight, false);
         irradiance += incident * cosine * visibility;
     }
