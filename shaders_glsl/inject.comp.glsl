@@ -3,9 +3,8 @@
 // receives (with shadow-map visibility) reflected diffusely, plus its emission. Written to
 // level 0 of the radiance volume as radiance × scale premultiplied by opacity. One invocation per
 // voxel of the voxelizer's occupied list (voxel_grid.h); the empty voxels stay zero.
-// With gatherBounce = 1 (one more bounce), each voxel also reflects the light its diffuse cones
-// gather from the current volume; it then writes to a separate image, since the cones read the
-// volume it would otherwise overwrite.
+// With addGathered = 1 each voxel also reflects the light its cones last gathered
+// (bounce_gather.comp.glsl): the light sources' light plus one more bounce.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
@@ -20,13 +19,12 @@ layout(set = 0, binding = 5, rgba8) uniform readonly image3D voxelAlbedo;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
 layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
-layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 9, rgba16f) uniform readonly image3D gatheredLight;
 layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
 layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
-#include "directional_voxels.glsl"
-layout(push_constant) uniform Push { uint gatherBounce; };
+layout(push_constant) uniform Push { uint addGathered; };
 
-#include "cone_tracing.glsl"
+#include "voxel_grid.h"
 #include "direct_light.glsl"
 
 void injectVoxel(ivec3 voxel) {
@@ -57,13 +55,10 @@ void injectVoxel(ivec3 voxel) {
         irradiance += incident * cosine * visibility;
     }
     vec3 outgoing = albedoOpacity.rgb * (1.0f / PI) * irradiance + imageLoad(voxelEmission, voxel).rgb;
-    if (gatherBounce != 0u && normalLength > 0.25f) {
-        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). Cones start two voxels out, past the voxel itself.
-        vec3 normal = normalSum / normalLength;
-        outgoing += albedoOpacity.rgb * traceDiffuseCones(center + normal * (2.0f * voxelSize), normal, 2.0f).rgb;
-    }
+    vec3 scaled = outgoing * frame.radianceScale;
+    if (addGathered != 0u) scaled += imageLoad(gatheredLight, voxel).rgb;  // already scaled
     float opacity = albedoOpacity.a;
-    imageStore(radiance, voxel, vec4(outgoing * frame.radianceScale * opacity, opacity));
+    imageStore(radiance, voxel, vec4(scaled * opacity, opacity));
 }
 
 void main() {

@@ -1,5 +1,6 @@
 // Light injection: direct light (with shadow-map visibility) and emission turned into the
-// outgoing radiance of every occupied voxel, written to level 0 of the radiance volume.
+// outgoing radiance of every occupied voxel, written to level 0 of the radiance volume; and the
+// bounce, each voxel's cones gathering the light of the volume for the next injection to add.
 #pragma once
 
 #include "gpu/pipelines.h"
@@ -12,21 +13,23 @@ namespace vct {
 struct InjectPass {
     explicit InjectPass(GpuContext& context);
 
-    // Writes level 0 of volumes.radiance from the scene voxels (the light sources' light reflected
-    // once), visible to the mip pass after.
+    // Writes level 0 of volumes.radiance from the scene voxels: the light sources' light reflected
+    // once, plus (addGathered) what the last gather left in volumes.gatheredLight. Visible to the
+    // mip pass after.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
-                const ShadowPass& shadows, VoxelVolumes& volumes);
-    // One more bounce: injects again, adding what each voxel's cones gather from the current
-    // (mipmapped) volume, and replaces level 0 with the result. The mips must be rebuilt after.
-    void recordBounce(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
-                      const ShadowPass& shadows, VoxelVolumes& volumes);
+                const ShadowPass& shadows, VoxelVolumes& volumes, bool addGathered);
+
+    // Every sliceCount-th occupied voxel from slicePhase gathers the light of the current
+    // (mipmapped) volume through its diffuse cones into volumes.gatheredLight; {1, 0} is all.
+    struct Slice {
+        uint32_t count = 1, phase = 0;
+    };
+    void recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes, Slice slice);
 
     Pipeline pipeline;
+    Pipeline gatherPipeline;
 
 private:
-    void dispatch(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
-                  const ShadowPass& shadows, const VoxelVolumes& volumes, VkImageView target, uint32_t gatherBounce);
-
     GpuContext& context_;
 };
 

@@ -188,6 +188,8 @@ FrameStats Renderer::renderFrame() {
     const FramePlan& plan = stats.plan;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
     const bool progressive = bouncesProgressively(settings_);
+    const InjectPass::Slice slice{progressiveSlices(settings_), slicePhase_ % progressiveSlices(settings_)};
+    const bool sweepEnds = !progressive || slice.phase + 1 == slice.count;
     // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
     auto submit = [&](const std::function<void(VkCommandBuffer)>& record) {
         submitAndWait(context_, [&](VkCommandBuffer commands) {
@@ -213,36 +215,36 @@ FrameStats Renderer::renderFrame() {
             [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer); });
         run(commands, Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
         // Progressively converging (the viewer), the injection is itself a bounce: the light
-        // sources' light plus what the cones gather from the last frame's light, so a moved light
-        // starts from the old solution instead of dropping to one bounce. Otherwise every frame
-        // that re-lights starts from the light sources alone: the same inputs, the same image.
+        // sources' light plus what the cones gathered from the last frame's light (a slice of the
+        // voxels gathers anew each frame), so a moved light starts from the old solution instead of
+        // dropping to one bounce. Otherwise every frame that re-lights starts from the light
+        // sources alone: the same inputs, the same image.
         run(commands, Pass::Inject, [&] {
-            if (progressive) {
-                injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
-                                         shadowViewsBuffer_.buffer, *shadowPass_, *volumes_);
-            } else {
-                injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                                   *shadowPass_, *volumes_);
-            }
+            if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, slice);
+            injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
+                               *shadowPass_, *volumes_, progressive);
         });
         run(commands, Pass::Mips, [&] {
             mipsPass_.record(commands, *volumes_);
-            if (converging) recordMeanRadiance(commands);
+            if (converging && sweepEnds) recordMeanRadiance(commands);
         });
     });
     bool converged = true;
     if (plan.runs(Pass::Inject)) {
         stats.bounces = 1;
-        // Remembers this mean for the next bounce; only progressive bounces can settle here.
-        if (converging) converged = meanRadianceSettled() && progressive;
+        // Remembers this mean for the next bounce; only progressive bounces settle here, once a
+        // whole sweep over the slices changed the light by less than the tolerance.
+        if (converging) converged = sweepEnds && meanRadianceSettled() && progressive;
+        if (progressive) slicePhase_ = (slice.phase + 1) % slice.count;
     }
     if (plan.runs(Pass::Bounce)) {
         const uint32_t more = converging ? kMaxBouncesPerFrame - 1 : settings_.resources.bounces - 1;
         for (uint32_t i = 0; i < more && !(converging && converged); ++i) {
             submit([&](VkCommandBuffer commands) {
                 run(commands, Pass::Bounce, [&] {
-                    injectPass_.recordBounce(commands, frameConstants_.buffer, lightsBuffer_.buffer,
-                                             shadowViewsBuffer_.buffer, *shadowPass_, *volumes_);
+                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, {});
+                    injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer,
+                                       shadowViewsBuffer_.buffer, *shadowPass_, *volumes_, true);
                     mipsPass_.record(commands, *volumes_);
                     if (converging) recordMeanRadiance(commands);
                 });

@@ -105,6 +105,7 @@ private:
     Buffer frameConstants_;
     Buffer meanRadiance_;  // host-visible RGBA16F texel
     float lastMeanRadiance_ = 0.0f;
+    uint32_t slicePhase_ = 0;  // the occupied voxels' slice the next progressive bounce gathers for
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;
     std::unique_ptr<ShadowPass> shadowPass_;

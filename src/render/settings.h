@@ -4,6 +4,7 @@
 //   ShadingSettings  constants of the frame only: Renderer::setShading takes them at no cost.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -125,6 +126,10 @@ struct ShadingSettings {
     // moving light never resets (and pumps) the indirect light: the viewer's choice. Otherwise
     // every frame that re-lights the voxels iterates to convergence.
     bool progressiveBounces = false;
+    // ...and each frame's bounce gathers for every Nth occupied voxel only, in turn, so that a
+    // moving light costs a fraction of a bounce per frame; the light sources' own light (the
+    // first bounce) is still re-injected whole every frame. 0: by the grid (progressiveSlices()).
+    uint32_t progressiveSlices = 0;
 
     DebugView debugView = DebugView::None;
     uint32_t debugVoxelMip = 0;  // the mip level the voxel views show
@@ -144,6 +149,14 @@ Components effectiveComponents(const ShadingSettings& shading);
 // One bounce per frame (progressiveBounces honoured: only converging light can be progressive).
 inline bool bouncesProgressively(const RenderSettings& settings) {
     return settings.resources.bounces == kConvergedBounces && settings.shading.progressiveBounces;
+}
+
+// The slices a progressive bounce is spread over: about 12 000 voxels a frame in a room (its
+// walls' voxels grow with the square of the resolution), none at 32³, 8 frames at 128³.
+inline uint32_t progressiveSlices(const RenderSettings& settings) {
+    if (settings.shading.progressiveSlices != 0) return settings.shading.progressiveSlices;
+    const uint32_t sixtyFourths = settings.resources.voxelResolution / 64;
+    return std::max(1u, sixtyFourths * sixtyFourths * 2);
 }
 
 // Whether the frame reads the voxels at all (indirect light, AO, voxel views): if not, no voxel

@@ -20,7 +20,7 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
         for (const char* name : {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y", "voxel radiance -y",
                                  "voxel radiance +z", "voxel radiance -z"})
             descs.push_back({name, half, 8, side / 2, mips - 1, false});
-    if (resources.bounces != 1) descs.push_back({"voxel radiance, next bounce", half, 8, side, 1, false});
+    if (resources.bounces != 1) descs.push_back({"voxel gathered light", half, 8, side, 1, false});
     return descs;
 }
 
@@ -47,8 +47,8 @@ static GpuImage makeVolume(GpuContext& context, const VoxelVolumeDesc& volume) {
     desc.format = volume.format;
     desc.extent = {volume.side, volume.side, volume.side};
     desc.mipLevels = volume.mipLevels;
-    // Written by storage, read by samplers, and copied and cleared (the bounce copies level 0;
-    // creation and the tests clear and fill them).
+    // Written by storage, read by samplers, cleared and copied (creation and the tests clear and
+    // fill them).
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                  VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     desc.debugName = volume.name;
@@ -62,7 +62,7 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     for (GpuImage* image : {&albedoOpacity, &normal, &emission, &radiance}) *image = makeVolume(context, descs[next++]);
     if (resources.anisotropicVoxels)
         for (int direction = 0; direction < 6; ++direction) directional.push_back(makeVolume(context, descs[next++]));
-    if (resources.bounces != 1) bounceTarget = makeVolume(context, descs[next++]);
+    if (resources.bounces != 1) gatheredLight = makeVolume(context, descs[next++]);
     occupiedVoxels = Buffer(context, occupiedListBytes(resolution),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
     // Written by the voxelizer (the count reset by a transfer), read by indirect dispatches.
@@ -102,13 +102,13 @@ std::vector<VkImageView> VoxelVolumes::directionalViews() const {
 
 std::vector<VkImageView> VoxelVolumes::lightLevelZeroViews() const {
     const VkImageView radianceLevelZero = radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0];
-    return {radianceLevelZero, bounceTarget.image != VK_NULL_HANDLE ? bounceTarget.view : radianceLevelZero};
+    return {radianceLevelZero, gatheredLight.image != VK_NULL_HANDLE ? gatheredLight.view : radianceLevelZero};
 }
 
 std::vector<const GpuImage*> VoxelVolumes::images() const {
     std::vector<const GpuImage*> all = {&albedoOpacity, &normal, &emission, &radiance};
     for (const GpuImage& chain : directional) all.push_back(&chain);
-    if (bounceTarget.image != VK_NULL_HANDLE) all.push_back(&bounceTarget);
+    if (gatheredLight.image != VK_NULL_HANDLE) all.push_back(&gatheredLight);
     return all;
 }
 

@@ -40,8 +40,10 @@ struct VoxelVolumes {
     // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
     // down (level 0 is shared); empty when the voxels are isotropic.
     std::vector<GpuImage> directional;
-    GpuImage bounceTarget;  // level 0 of the next bounce, written while the cones read radiance (bounces ≠ 1)
-    Sampler sampler;        // trilinear between mips, transparent black outside the grid
+    // RGBA16F (bounces ≠ 1): the light each voxel reflects of what its cones last gathered, scaled
+    // as the radiance; the injection adds it for the next bounce.
+    GpuImage gatheredLight;
+    Sampler sampler;  // trilinear between mips, transparent black outside the grid
     // The occupied voxels (voxel_grid.h): a uint each, room for every voxel of the grid; and their
     // count with the indirect dispatch over them (glsl::WorkListHeader).
     Buffer occupiedVoxels;
@@ -52,8 +54,8 @@ struct VoxelVolumes {
     std::vector<VkImageView> directionalViews() const;
     // Every image above that exists, in voxelVolumeDescs() order.
     std::vector<const GpuImage*> images() const;
-    // The two level-0 images the light passes write (radiance, then the next bounce's target or
-    // radiance again where there is none).
+    // The two level-0 images of light (radiance, then the gathered light or radiance again where
+    // there is none): the voxelizer zeroes them where a voxel is empty.
     std::vector<VkImageView> lightLevelZeroViews() const;
     // What the images' memory requirements asked for, and the occupied-voxel buffers.
     uint64_t allocatedBytes() const;

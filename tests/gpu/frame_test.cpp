@@ -286,6 +286,23 @@ TEST_F(Frame, ConvergedLightIsTheSameForTheSameInputs) {
     EXPECT_EQ(std::memcmp(first.rgb.data(), second.rgb.data(), first.rgb.size() * sizeof(float)), 0);
 }
 
+// Renders progressive frames until the light settles, checking on the way that it only grows;
+// returns how many frames that took. `image` is left holding the settled light.
+static uint32_t framesToSettle(Renderer& progressive, Image& image) {
+    uint32_t frames = 0;
+    double previous = 0.0;
+    for (FrameStats stats; frames < 96; ++frames) {
+        stats = progressive.renderFrame();
+        if (stats.plan.passes.size() == 3) break;  // only gbuffer, shade, resolve: settled
+        EXPECT_EQ(stats.bounces, 1u) << "frame " << frames;
+        const double now = imageSum(progressive.readImage());
+        EXPECT_GE(now, previous * 0.999) << "the light grows towards its fixed point, it does not pump";
+        previous = now;
+    }
+    image = progressive.readImage();
+    return frames;
+}
+
 TEST_F(Frame, ProgressiveBouncesReachTheConvergedLightOneBouncePerFrame) {
     RenderSettings settings = smallSettings();
     settings.shading.mode = RenderMode::Indirect;
@@ -294,20 +311,35 @@ TEST_F(Frame, ProgressiveBouncesReachTheConvergedLightOneBouncePerFrame) {
     const double target = imageSum(allAtOnce.readImage());
 
     settings.shading.progressiveBounces = true;
+    settings.shading.progressiveSlices = 1;
     Renderer progressive(gpu(), scene, settings);
-    uint32_t frames = 0;
-    double previous = 0.0;
-    for (FrameStats stats; frames < 64; ++frames) {
-        stats = progressive.renderFrame();
-        if (stats.plan.passes.size() == 3) break;  // only gbuffer, shade, resolve: settled
-        EXPECT_EQ(stats.bounces, 1u) << "frame " << frames;
-        const double now = imageSum(progressive.readImage());
-        EXPECT_GE(now, previous * 0.999) << "the light grows towards its fixed point, it does not pump";
-        previous = now;
-    }
+    Image settled;
+    const uint32_t frames = framesToSettle(progressive, settled);
     std::printf("[ bounces ] progressive: settled after %u frames\n", frames);
-    EXPECT_LT(frames, 64u);
-    EXPECT_NEAR(imageSum(progressive.readImage()), target, 0.03 * target);
+    EXPECT_LT(frames, 32u);
+    EXPECT_NEAR(imageSum(settled), target, 0.03 * target);
+}
+
+TEST_F(Frame, ProgressiveBouncesSpreadOverSlicesReachTheSameLight) {
+    // Each frame gathers for a third of the voxels only: the light takes about three times as many
+    // frames to settle, and settles where a whole bounce per frame does.
+    RenderSettings settings = smallSettings();
+    settings.shading.mode = RenderMode::Indirect;
+    settings.shading.progressiveBounces = true;
+    settings.shading.progressiveSlices = 1;
+    Renderer whole(gpu(), scene, settings);
+    Image wholeImage;
+    const uint32_t wholeFrames = framesToSettle(whole, wholeImage);
+
+    settings.shading.progressiveSlices = 3;
+    Renderer sliced(gpu(), scene, settings);
+    Image slicedImage;
+    const uint32_t slicedFrames = framesToSettle(sliced, slicedImage);
+    std::printf("[ bounces ] settled after %u frames whole, %u in thirds\n", wholeFrames, slicedFrames);
+    EXPECT_GE(slicedFrames, 2 * wholeFrames);
+    EXPECT_LT(slicedFrames, 96u);
+    const double target = imageSum(wholeImage);
+    EXPECT_NEAR(imageSum(slicedImage), target, 0.02 * target);
 }
 
 }  // namespace

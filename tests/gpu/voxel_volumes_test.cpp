@@ -35,11 +35,11 @@ TEST_F(VoxelVolumesTest, EstimateIsWhatTheDeviceAllocates) {
 TEST_F(VoxelVolumesTest, OnlyWhatTheSettingsNeedIsCreated) {
     const VoxelVolumes isotropic(gpu(), {.voxelResolution = 32, .anisotropicVoxels = false, .bounces = 1});
     EXPECT_TRUE(isotropic.directional.empty());
-    EXPECT_EQ(isotropic.bounceTarget.image, VK_NULL_HANDLE) << "one bounce needs no second target";
+    EXPECT_EQ(isotropic.gatheredLight.image, VK_NULL_HANDLE) << "one bounce needs no second target";
     const VoxelVolumes twoBounces(gpu(), {.voxelResolution = 32, .bounces = 2});
     EXPECT_EQ(twoBounces.directional.size(), 6u);
     EXPECT_EQ(twoBounces.directional[0].desc.extent.width, 16u) << "the chains start at the grid's level 1";
-    EXPECT_NE(twoBounces.bounceTarget.image, VK_NULL_HANDLE);
+    EXPECT_NE(twoBounces.gatheredLight.image, VK_NULL_HANDLE);
 }
 
 TEST_F(VoxelVolumesTest, TheRendererMemoryEstimateCountsTheVolumesOnce) {

@@ -1,0 +1,52 @@
+#version 460
+// One bounce of the voxels' light: each occupied voxel's diffuse cones gather the light of the
+// current (mipmapped) radiance volume, and the voxel stores what it reflects of it, albedo × the
+// gathered radiance, × the radiance volume's storage scale. The injection adds it to the light
+// sources' light (inject.comp.glsl), so the next mip chain holds one more bounce.
+// It writes its own image while the cones read the radiance volume, and it may visit only a slice
+// of the occupied list (every sliceCount-th voxel from slicePhase): the viewer spreads a bounce
+// over several frames, and the voxels it skips keep what they gathered before.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.h"
+
+layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, rgba8) uniform readonly image3D voxelAlbedo;
+layout(set = 0, binding = 2, rgba16f) uniform readonly image3D voxelNormal;
+layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D gatheredLight;
+layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
+layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
+#include "directional_voxels.glsl"
+layout(push_constant) uniform Push {
+    uint sliceCount;
+    uint slicePhase;
+};
+
+#include "cone_tracing.glsl"
+
+void gatherVoxel(ivec3 voxel) {
+    vec3 normalSum = imageLoad(voxelNormal, voxel).xyz;
+    float normalLength = length(normalSum);
+    vec3 reflected = vec3(0.0f);
+    // A voxel whose triangles disagree (a thin two-sided wall, a corner) has no side to gather
+    // from; it keeps the light sources' light alone.
+    if (normalLength > 0.25f) {
+        vec3 normal = normalSum / normalLength;
+        vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
+        float voxelSize = frame.grid.originVoxelSize.w;
+        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). Cones start two voxels out, past the voxel itself.
+        vec3 gathered = traceDiffuseCones(center + normal * (2.0f * voxelSize), normal, 2.0f).rgb;
+        reflected = imageLoad(voxelAlbedo, voxel).rgb * gathered * frame.radianceScale;
+    }
+    imageStore(gatheredLight, voxel, vec4(reflected, 0.0f));
+}
+
+void main() {
+    uint count = (occupied.count + sliceCount - 1u - slicePhase) / sliceCount;  // list items in the slice
+    // The dispatch covers the whole list and may be capped: each invocation strides over the slice.
+    uint stride = gl_NumWorkGroups.x * WORK_LIST_GROUP_SIZE;
+    for (uint i = gl_GlobalInvocationID.x; i < count; i += stride)
+        gatherVoxel(ivec3(unpackCell(occupiedVoxels[i * sliceCount + slicePhase])));
+}
