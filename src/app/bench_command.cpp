@@ -125,7 +125,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
 
     options.onMeasured = [](const bench::Measurement& m) {
         std::printf("  %-16s %-34s %8.1f ms static %8.1f ms light (%u bounces, %.0f ms each)", m.scene.c_str(),
-                    m.setting.label.c_str(), m.staticFrame.gpuMilliseconds, m.lightChangeFrame.gpuMilliseconds,
+                    m.setting.label.c_str(), m.staticFrame.gpuMilliseconds, m.lightChangeFrame.cpuMilliseconds,
                     m.bounces, m.bounceMilliseconds);
         if (m.errors)
             std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse, m.errors->direct.relMse,

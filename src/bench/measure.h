@@ -63,7 +63,7 @@ struct Measurement {
     double voxelizeMilliseconds = 0.0;
     uint32_t bounces = 0;             // bounces a light change ran (from the light sources' light on)
     bool bouncesConverged = true;     // they reached kBounceTolerance
-    double bounceMilliseconds = 0.0;  // GPU time per bounce: (inject + mips + bounce) / bounces
+    double bounceMilliseconds = 0.0;  // wall time of a light change beyond a static frame's, per bounce
     uint64_t deviceMemoryBytes = 0;
     bool imagesFinite = true;  // no NaN or Inf in the full, direct or indirect image
     std::optional<ModeErrors> errors;
