@@ -200,24 +200,38 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     // inject.comp.glsl: frame, lights, shadow views, two shadow maps, four voxel images, the radiance
-    // volume, the occupied-voxel list and its count, and directional_voxels.glsl's array of six
-    // directional volumes at 12; one invocation per listed voxel, 64 to a workgroup.
+    // level it writes, the gathered light it adds, and the occupied-voxel list and its count; one
+    // invocation per listed voxel, 64 to a workgroup.
     const ShaderReflection inject = reflectFile("inject.comp");
     EXPECT_EQ(inject.stage, kCompute);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute),
                                               binding(0, 1, kStorageBuffer, kCompute),
                                               binding(0, 2, kStorageBuffer, kCompute),
                                               binding(0, 3, kCombined, kCompute), binding(0, 4, kCombined, kCompute)};
-    for (uint32_t b = 5; b <= 8; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
+    for (uint32_t b = 5; b <= 9; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
+    expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
+    expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
+    expectBindings(inject.bindings, expected);
+    EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint addGathered
+    EXPECT_EQ(inject.localSize[0], 64u);
+    EXPECT_EQ(inject.localSize[1], 1u);
+    EXPECT_EQ(inject.localSize[2], 1u);
+}
+
+TEST(SpirvReflect, BounceGatherComputeShaderHasTheBindingsItsGlslDeclares) {
+    // bounce_gather.comp.glsl: frame, albedo and normal, the gathered light it writes, the radiance
+    // volume, the occupied-voxel list and its count, and directional_voxels.glsl's six chains at 12.
+    const ShaderReflection gather = reflectFile("bounce_gather.comp");
+    EXPECT_EQ(gather.stage, kCompute);
+    std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute)};
+    for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
     expected.push_back(binding(0, 9, kCombined, kCompute));
     expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 12, kCombined, kCompute, 6));
-    expectBindings(inject.bindings, expected);
-    EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint gatherBounce
-    EXPECT_EQ(inject.localSize[0], 64u);
-    EXPECT_EQ(inject.localSize[1], 1u);
-    EXPECT_EQ(inject.localSize[2], 1u);
+    expectBindings(gather.bindings, expected);
+    EXPECT_EQ(gather.pushConstantBytes, 8u);  // uint sliceCount, slicePhase
+    EXPECT_EQ(gather.localSize[0], 64u);
 }
 
 TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
