@@ -54,6 +54,17 @@ std::string settingLabel(const RenderSettings& s) {
     return label;
 }
 
+std::vector<std::string> settingLabelLegend() {
+    return {
+        "labels: v64 = 64³ voxels, c6 = 6 diffuse cones,",
+        "a40 = 40° cone aperture, s0.5 = step of 0.5 cone diameters,",
+        "aniso / iso = six directional mip chains / one,",
+        "bconv / b1 = bounces until converged / one bounce,",
+        "ss2 = 2×2 samples a pixel, sm4096 = 4096² sun shadow map,",
+        "d4 = diffuse cones traced once per 4×4 pixels; * = on the front",
+    };
+}
+
 std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {
     // The base: the renderer's defaults at one sample per pixel and a 2048² sun shadow map, 64³.
     // Not the full product of {32,64,128} × {1,6,9} cones × {40°,60°} × {0.5,1} × mips × bounces

@@ -15,8 +15,11 @@ struct BenchSetting {
     RenderSettings settings;
 };
 
-// "v64 c6 a60 s0.5 aniso b1", plus " ss2" when it supersamples, " sm1024" for a smaller sun shadow map.
+// "v64 c6 a60 s0.5 aniso b1", plus " ss2" when it supersamples, " sm4096" for a sun shadow map
+// other than 2048², " d4" for diffuse cones at a reduced resolution.
 std::string settingLabel(const RenderSettings& settings);
+// What each part of a label means, a few lines for the plot's key.
+std::vector<std::string> settingLabelLegend();
 
 // One axis at a time around a cheap base (64³, 6 cones of 60°, step 0.5, anisotropic, 1 bounce),
 // a few combinations, and every preset; image size from `imageSettings`.

@@ -218,8 +218,9 @@ std::string toSvg(const std::vector<SettingSummary>& summary, const RunInfo& inf
     std::snprintf(note, sizeof note,
                   "%s, %ux%u, median of %u frames; times: mean, relMSE: geometric mean over %zu scene(s)",
                   info.device.c_str(), info.width, info.height, info.frames, info.references.size());
-    return plotErrorAgainstTime(points, {"vct bench: error against frame time", "GPU time of a static frame, ms (log)",
-                                         "relMSE of full light against the path tracer (log)", note});
+    return plotErrorAgainstTime(points,
+                                {"vct bench: error against frame time", "GPU time of a static frame, ms (log)",
+                                 "relMSE of full light against the path tracer (log)", note, settingLabelLegend()});
 }
 
 std::string summaryTable(const std::vector<SettingSummary>& summary) {

@@ -8,9 +8,11 @@
 namespace vct::bench {
 namespace {
 
-constexpr double kWidth = 1160, kHeight = 600;
-// Margins around the plot area; the right one holds the key from point numbers to settings.
-constexpr double kLeft = 90, kRight = 330, kTop = 70, kBottom = 70;
+// The plot area and its margins; the key from point numbers to settings goes right of it, as wide
+// and as tall as its lines need.
+constexpr double kPlotWidth = 740, kPlotHeight = 460;
+constexpr double kLeft = 90, kTop = 70, kBottom = 70;
+constexpr double kKeyGap = 20, kKeyRightMargin = 16, kKeyLine = 16;
 
 // A logarithmic axis spanning whole decades around [lo, hi].
 struct LogAxis {
@@ -30,6 +32,12 @@ std::string number(double value) {
 }
 
 }  // namespace
+
+double estimatedTextWidth(const std::string& text) {
+    size_t characters = 0;
+    for (unsigned char c : text) characters += (c & 0xC0) != 0x80;  // UTF-8: count lead bytes only
+    return 12.0 * 0.62 * double(characters);
+}
 
 std::string escapeXml(const std::string& text) {
     std::string escaped;
@@ -57,16 +65,31 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
         }
     }
     const LogAxis xAxis(xLo, xHi), yAxis(yLo, yHi);
-    const double plotWidth = kWidth - kLeft - kRight, plotHeight = kHeight - kTop - kBottom;
+    const double plotWidth = kPlotWidth, plotHeight = kPlotHeight;
+    std::vector<std::string> keyLines;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& p = points[i];
+        keyLines.push_back(std::to_string(i + 1) + "  " + p.label + (p.preset.empty() ? "" : "  (" + p.preset + ")") +
+                           (p.onFront ? "  *" : ""));
+    }
+    double keyWidth = estimatedTextWidth("key");
+    for (size_t i = 0; i < keyLines.size(); ++i)  // a preset's line is bold, about a tenth wider
+        keyWidth = std::max(keyWidth, estimatedTextWidth(keyLines[i]) * (points[i].preset.empty() ? 1.0 : 1.1));
+    for (const std::string& line : text.keyNotes) keyWidth = std::max(keyWidth, estimatedTextWidth(line));
+    const double keyX = kLeft + plotWidth + kKeyGap;
+    const double keyNotesY = kTop + 22 + kKeyLine * (double(keyLines.size()) + 1);
+    const double width = std::ceil(keyX + keyWidth + kKeyRightMargin);
+    const double height =
+        std::ceil(std::max(kTop + plotHeight + kBottom, keyNotesY + kKeyLine * double(text.keyNotes.size()) + 8));
     const auto px = [&](double x) { return kLeft + xAxis.fraction(x) * plotWidth; };
     const auto py = [&](double y) { return kTop + (1.0 - yAxis.fraction(y)) * plotHeight; };
 
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-        << "\" viewBox=\"0 0 " << kWidth << " " << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+        << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-        << "<text x=\"" << kWidth / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"16\">" << escapeXml(text.title)
-        << "</text>\n<text x=\"" << kWidth / 2 << "\" y=\"44\" text-anchor=\"middle\" fill=\"#555\">"
+        << "<text x=\"" << width / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"16\">" << escapeXml(text.title)
+        << "</text>\n<text x=\"" << width / 2 << "\" y=\"44\" text-anchor=\"middle\" fill=\"#555\">"
         << escapeXml(text.note) << "</text>\n";
 
     // Grid lines at 1, 2 and 5 × each decade; labels at the decades and, on short axes, the 2s and 5s.
@@ -98,8 +121,8 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
     gridLines(yAxis, true);
     svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
         << "\" fill=\"none\" stroke=\"#333\"/>\n"
-        << "<text x=\"" << kLeft + plotWidth / 2 << "\" y=\"" << kHeight - 24 << "\" text-anchor=\"middle\">"
-        << escapeXml(text.xLabel) << "</text>\n"
+        << "<text x=\"" << kLeft + plotWidth / 2 << "\" y=\"" << kTop + plotHeight + kBottom - 24
+        << "\" text-anchor=\"middle\">" << escapeXml(text.xLabel) << "</text>\n"
         << "<text transform=\"translate(22," << kTop + plotHeight / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
         << escapeXml(text.yLabel) << "</text>\n";
 
@@ -119,7 +142,6 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
 
     // Each point carries its number; the key beside the plot names the setting, so labels of
     // neighbouring points cannot hide each other.
-    const double keyX = kLeft + plotWidth + 20;
     svg << "<text x=\"" << keyX << "\" y=\"" << kTop + 4 << "\" font-weight=\"bold\">key</text>\n";
     for (size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& p = points[i];
@@ -139,9 +161,11 @@ std::string plotErrorAgainstTime(const std::vector<PlotPoint>& allPoints, const 
             << (preset      ? "#1f77b4"
                 : p.onFront ? "#d62728"
                             : "#444")
-            << "\"" << (preset ? " font-weight=\"bold\"" : "") << ">" << id << "  " << escapeXml(p.label)
-            << (preset ? "  (" + escapeXml(p.preset) + ")" : "") << (p.onFront ? "  *" : "") << "</text>\n";
+            << "\"" << (preset ? " font-weight=\"bold\"" : "") << ">" << escapeXml(keyLines[i]) << "</text>\n";
     }
+    for (size_t i = 0; i < text.keyNotes.size(); ++i)
+        svg << "<text x=\"" << keyX << "\" y=\"" << keyNotesY + kKeyLine * double(i) << "\" fill=\"#555\">"
+            << escapeXml(text.keyNotes[i]) << "</text>\n";
 
     // Legend, in the plot's top right corner.
     const double lx = kLeft + plotWidth - 200, ly = kTop + 12;

@@ -1,6 +1,7 @@
 // vct bench's error metrics and Pareto front on inputs whose answers are known by hand.
 #include <cmath>
 #include <limits>
+#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -136,6 +137,36 @@ TEST(SvgPlot, DrawsEveryPointTheFrontAndEscapesLabels) {
     size_t circles = 0;
     for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
     EXPECT_EQ(circles, 3u + 3u);  // three points and the legend's three
+}
+
+// The key's long labels and the notes under it lie inside the canvas: each left-anchored text's
+// start plus 0.6 em a character (12 px sans-serif) is within the SVG's width. The 0.6 em is the
+// test's own bound, not the plot's estimate.
+TEST(SvgPlot, KeyAndItsNotesFitInsideTheCanvas) {
+    const std::string longLabel = "v128 c16 a120 s0.25 aniso bconv ss4 sm16384 d4 and then some more";
+    const std::string svg =
+        plotErrorAgainstTime({{longLabel, 10.0, 0.1, true, "quality"}, {"v32 c1", 20.0, 0.2, false, ""}},
+                             {"title", "x", "y", "note", {"labels: v64 = 64³ voxels, c6 = 6 diffuse cones, and more"}});
+    const std::regex canvas("<svg [^>]*width=\"([0-9.]+)\" height=\"([0-9.]+)\"");
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(svg, match, canvas));
+    const double width = std::stod(match[1]), height = std::stod(match[2]);
+    const std::regex text("<text x=\"([0-9.]+)\" y=\"([0-9.]+)\"([^>]*)>([^<]*)</text>");
+    size_t checked = 0;
+    bool sawNote = false;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator(); ++it) {
+        const std::smatch& m = *it;
+        if (m[3].str().find("text-anchor") != std::string::npos) continue;  // centred or right-aligned
+        size_t characters = 0;
+        for (unsigned char c : m[4].str()) characters += (c & 0xC0) != 0x80;
+        const double bold = m[3].str().find("bold") != std::string::npos ? 1.1 : 1.0;
+        EXPECT_LE(std::stod(m[1]) + 12.0 * 0.6 * bold * double(characters), width) << m[4];
+        EXPECT_LE(std::stod(m[2]), height) << m[4];
+        sawNote = sawNote || m[4].str().find("v64 = 64³ voxels") != std::string::npos;
+        ++checked;
+    }
+    EXPECT_GE(checked, 4u);  // the key's title, its two lines and the note at least
+    EXPECT_TRUE(sawNote) << "the key's notes are not drawn";
 }
 
 }  // namespace
