@@ -11,8 +11,9 @@ namespace vct {
 Arguments::Arguments(const std::vector<std::string>& arguments, const std::set<std::string>& flags,
                      const std::set<std::string>& valued) {
     for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& argument = arguments[i];
-        if (argument.rfind("--", 0) != 0) throw Error("unexpected argument '" + argument + "'");
+        // "-h" is the one short option: what people type first when they meet a tool.
+        const std::string& argument = arguments[i] == "-h" ? "--help" : arguments[i];
+        if (argument.rfind("--", 0) != 0) throw Error("unexpected argument '" + argument + "' (see --help)");
         const std::string name = argument.substr(2);
         if (flags.count(name)) {
             values_[name] = "";

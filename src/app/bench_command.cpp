@@ -11,6 +11,7 @@
 
 #include "app/commands.h"
 #include "app/options.h"
+#include "app/progress_line.h"
 #include "app/scene_setup.h"
 #include "bench/comparison.h"
 #include "bench/failure_report.h"
@@ -18,6 +19,7 @@
 #include "bench/measure.h"
 #include "bench/report.h"
 #include "error.h"
+#include "io/output_paths.h"
 #include "io/temporary_files.h"
 #include "render/camera.h"
 #include "render/presets.h"
@@ -66,10 +68,8 @@ int runBench(const std::vector<std::string>& rawArguments) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Option> rows = benchOptions();
     const Arguments arguments = parseArguments(rawArguments, rows);
-    if (arguments.has("help")) {
-        std::printf("usage: vct bench [options]\n\n%s", optionsHelp(rows, benchDefaults()).c_str());
-        return 0;
-    }
+    if (answerHelpOrVersion(arguments, "vct bench [options]", rows, benchDefaults())) return 0;
+    // Every argument, scene and folder is checked before the device opens and anything is measured.
     // Only the image size comes from the options: the matrix sets everything else.
     const RenderSettings imageSettings = renderSettingsFromArguments(arguments, rows, benchDefaults());
     const std::vector<bench::BenchSetting> matrix =
@@ -79,17 +79,21 @@ int runBench(const std::vector<std::string>& rawArguments) {
     const std::vector<std::string> scenes =
         arguments.has("scenes") ? splitList(arguments.text("scenes", "")) : builtinSceneNames();
     if (scenes.empty()) throw Error("--scenes names no scene");
-    const std::string outDir = arguments.text("out-dir", "bench-results");
+    for (const std::string& name : scenes) checkSceneName(name, "--scenes");
     const std::string referenceDir = arguments.text("reference-dir", std::string(VCT_SOURCE_DIR) + "/assets/reference");
+    if (arguments.has("reference-dir") && !std::filesystem::is_directory(referenceDir))
+        throw Error("--reference-dir '" + referenceDir + "' is not a folder");
     bench::MeasureOptions options;
     options.frames = arguments.unsignedInt("frames", 3, 1, 1000);
     options.warmupFrames = arguments.unsignedInt("warmup", 1, 0, 1000);
-    std::error_code error;
-    std::filesystem::create_directories(outDir, error);
-    if (error) throw Error("cannot create the output folder '" + outDir + "': " + error.message());
+    const float gpuTimeout = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
+    const std::string outDir = arguments.text("out-dir", "bench-results");
+    prepareOutputFolder(outDir);
 
+    ProgressLine progress("vct bench");
+    progress.setStage("opening the device");
     GpuContext context(contextOptionsFromArguments(arguments));
-    context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
+    context.fenceTimeoutSeconds = gpuTimeout;
     bench::RunInfo info;
     info.device = context.deviceName();
     info.width = imageSettings.image.width;
@@ -100,54 +104,82 @@ int runBench(const std::vector<std::string>& rawArguments) {
     // the previous run's set as it was, never new bench files beside an old failure_modes.json.
     std::vector<std::pair<std::string, std::string>> outputs;
     const auto writeOutputs = [&] {
+        progress.setStage("writing the results");
         writeFilesAtomically(outputs);
-        for (const auto& output : outputs) std::printf("wrote %s\n", output.first.c_str());
+        progress.hideWhile([&] {
+            for (const auto& output : outputs) std::printf("wrote %s\n", output.first.c_str());
+        });
         outputs.clear();
     };
     const auto measureComparison = [&] {
+        progress.setStage("the side-by-side with an OpenGL VCT");
         const std::optional<bench::References> references =
             bench::loadReferences(referenceDir, "cornell-sun", imageSettings.image.width, imageSettings.image.height);
         const bench::ComparisonReport report =
             bench::measureComparison(context, references ? &*references : nullptr, imageSettings.image.width,
                                      imageSettings.image.height, options);
         outputs.emplace_back(outDir + "/comparison.json", bench::comparisonJson(report));
-        std::printf("\n%s", bench::comparisonText(report).c_str());
+        progress.hideWhile([&] { std::printf("\n%s", bench::comparisonText(report).c_str()); });
     };
     if (arguments.has("comparison")) {
         measureComparison();
         writeOutputs();
+        progress.finish();
         if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
         return 0;
     }
 
-    std::printf("vct bench: %zu settings × %zu scenes at %ux%u on %s\n", matrix.size(), scenes.size(),
-                imageSettings.image.width, imageSettings.image.height, info.device.c_str());
+    // Every scene loads before the first is measured: a broken file fails the run at once.
+    std::vector<Scene> loadedScenes;
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        progress.setStage("loading " + scenes[i]);
+        LoadOptions loadOptions;
+        loadOptions.bufferLimits = sceneBufferLimits(context);
+        Scene scene = loadScene(scenes[i], loadOptions);
+        progress.hideWhile([&] {
+            for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+        });
+        if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
+        loadedScenes.push_back(std::move(scene));
+    }
 
-    options.onMeasured = [](const bench::Measurement& m) {
-        std::printf("  %-16s %-34s %8.1f ms static %8.1f ms light (%u bounces, %.0f ms each)", m.scene.c_str(),
-                    m.setting.label.c_str(), m.staticFrame.gpuMilliseconds, m.lightChangeFrame.cpuMilliseconds,
-                    m.bounces, m.bounceMilliseconds);
-        if (m.errors)
-            std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse, m.errors->direct.relMse,
-                        m.errors->indirect.relMse);
-        std::printf("%s\n", m.imagesFinite ? "" : "   NON-FINITE PIXELS");
-        std::fflush(stdout);
+    progress.hideWhile([&] {
+        std::printf("vct bench: %zu settings × %zu scenes at %ux%u on %s\n", matrix.size(), scenes.size(),
+                    imageSettings.image.width, imageSettings.image.height, info.device.c_str());
+    });
+
+    const size_t total = matrix.size() * scenes.size();
+    size_t measured = 0;
+    std::string sceneStage;
+    options.onMeasured = [&](const bench::Measurement& m) {
+        progress.hideWhile([&] {
+            std::printf("  %-16s %-34s %8.1f ms static %8.1f ms light (%u bounces, %.0f ms each)", m.scene.c_str(),
+                        m.setting.label.c_str(), m.staticFrame.gpuMilliseconds, m.lightChangeFrame.cpuMilliseconds,
+                        m.bounces, m.bounceMilliseconds);
+            if (m.errors)
+                std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse,
+                            m.errors->direct.relMse, m.errors->indirect.relMse);
+            std::printf("%s\n", m.imagesFinite ? "" : "   NON-FINITE PIXELS");
+        });
+        ++measured;
+        progress.setStage(sceneStage + ", " + std::to_string(measured) + " of " + std::to_string(total) + " measured");
     };
     std::vector<bench::Measurement> measurements;
     std::optional<bench::References> cornellReferences;
-    for (const std::string& name : scenes) {
-        LoadOptions loadOptions;
-        loadOptions.bufferLimits = sceneBufferLimits(context);
-        Scene scene = loadScene(name, loadOptions);
-        for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
-        if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const std::string& name = scenes[i];
+        const Scene& scene = loadedScenes[i];
         const std::optional<bench::References> references = bench::loadReferences(
             referenceDir, sceneFileName(name), imageSettings.image.width, imageSettings.image.height);
         if (references) info.references[scene.name] = *references;
         if (references && name == "cornell") cornellReferences = references;
         if (!references)
-            std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
-                        imageSettings.image.width, imageSettings.image.height, referenceDir.c_str());
+            progress.hideWhile([&] {
+                std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
+                            imageSettings.image.width, imageSettings.image.height, referenceDir.c_str());
+            });
+        sceneStage = name + " (scene " + std::to_string(i + 1) + " of " + std::to_string(scenes.size()) + ")";
+        progress.setStage(sceneStage + ", " + std::to_string(measured) + " of " + std::to_string(total) + " measured");
         for (bench::Measurement& m :
              bench::measureScene(context, scene, matrix, references ? &*references : nullptr, options)) {
             m.fullImage = {};  // not kept: only the numbers are written
@@ -160,11 +192,13 @@ int runBench(const std::vector<std::string>& rawArguments) {
     outputs.emplace_back(outDir + "/bench.csv", bench::toCsv(measurements));
     outputs.emplace_back(outDir + "/bench.json", bench::toJson(measurements, summary, info));
     outputs.emplace_back(outDir + "/bench.svg", bench::toSvg(summary, info));
-    std::printf(
-        "\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
-        "luminance / reference) geometric means\n%s",
-        bench::summaryTable(summary).c_str());
-    std::printf("measured in %.0f s\n", info.seconds);
+    progress.hideWhile([&] {
+        std::printf(
+            "\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
+            "luminance / reference) geometric means\n%s",
+            bench::summaryTable(summary).c_str());
+        std::printf("measured in %.0f s\n", info.seconds);
+    });
     if (!arguments.has("quick") && !arguments.has("no-failure-modes")) {
         // With the preset being measured, else `balanced`.
         const std::string presetName = arguments.text("preset", "balanced");
@@ -172,12 +206,13 @@ int runBench(const std::vector<std::string>& rawArguments) {
         RenderSettings settings = preset ? *preset : RenderSettings{};
         settings.image.width = imageSettings.image.width;
         settings.image.height = imageSettings.image.height;
+        progress.setStage("the failure modes");
         const bench::FailureModeReport report = bench::measureFailureModes(
             context, settings,
             cornellReferences && cornellReferences->indirectOneBounce ? &*cornellReferences->indirectOneBounce
                                                                       : nullptr);
         outputs.emplace_back(outDir + "/failure_modes.json", bench::failureModesJson(report));
-        std::printf("\n%s", bench::failureModesText(report).c_str());
+        progress.hideWhile([&] { std::printf("\n%s", bench::failureModesText(report).c_str()); });
         for (const bench::ResolutionLuminance& r : report.drift)
             if (!r.finite) {
                 writeOutputs();  // what was measured, with the failure modes that show the problem
@@ -189,6 +224,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
         !arguments.has("no-comparison"))
         measureComparison();
     writeOutputs();
+    progress.finish();
     for (const bench::Measurement& m : measurements)
         if (!m.imagesFinite)
             throw Error("scene '" + m.scene + "', setting '" + m.setting.label + "' gave non-finite pixels");

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/options.h"
 #include "error.h"
 #include "io/exit_immediately.h"
 #include "io/temporary_files.h"
@@ -17,6 +18,10 @@ static void printUsage() {
         "  render   render one image to a .pfm (linear radiance) or .png file (vct render --help)\n"
         "  view     open a window and explore a scene interactively (vct view --help)\n"
         "  bench    measure run time against error over a matrix of settings (vct bench --help)\n"
+        "\n"
+        "\n"
+        "  -h, --help   this help; each command has its own (vct render --help)\n"
+        "  --version    print the version of vct and exit\n"
         "\n"
         "Errors are reported as one sentence and exit code 1.\n");
 }
@@ -36,6 +41,10 @@ int main(int argc, char** argv) {
         if (command == "bench") return vct::runBench(arguments);
         if (command == "--help" || command == "-h" || command == "help") {
             printUsage();
+            return 0;
+        }
+        if (command == "--version") {
+            std::printf("%s\n", vct::versionText().c_str());
             return 0;
         }
         std::fprintf(stderr, "vct: unknown command '%s'\n", command.c_str());

@@ -86,7 +86,14 @@ std::vector<Option> makeSharedOptions() {
          [](const V& v, S& s) { s.shading.ambientFactor = v.number(0.0f, 1e6f); },
          [](const S& s) { return number(s.shading.ambientFactor); }},
         {"voxels", "N", "voxels per side of the grid, a power of two 32..512",
-         [](const V& v, S& s) { s.resources.voxelResolution = v.whole(32, 512); },
+         [](const V& v, S& s) {
+             const uint32_t resolution = v.whole(32, 512);
+             // Checked here too, not only by the renderer: before the scene loads or the device opens.
+             if ((resolution & (resolution - 1)) != 0)
+                 throw Error("--voxels: the voxel resolution must be a power of two from 32 to 512, not " +
+                             std::to_string(resolution));
+             s.resources.voxelResolution = resolution;
+         },
          [](const S& s) { return std::to_string(s.resources.voxelResolution); }},
         {"voxel-mips", "isotropic|anisotropic", "one mip chain or six directional ones",
          [](const V& v, S& s) {
@@ -149,8 +156,10 @@ const Option& sharedOption(const std::string& name) {
     throw std::out_of_range("no shared option --" + name);
 }
 
+std::string versionText() { return std::string("vct ") + VCT_VERSION; }
+
 Arguments parseArguments(const std::vector<std::string>& arguments, const std::vector<Option>& options) {
-    std::set<std::string> flags = {"help"}, valued;
+    std::set<std::string> flags = {"help", "version"}, valued;
     for (const Option& option : options) (option.value.empty() ? flags : valued).insert(option.name);
     return Arguments(arguments, flags, valued);
 }
@@ -165,6 +174,22 @@ std::string optionsHelp(const std::vector<Option>& options, const RenderSettings
         help += "\n";
     }
     return help;
+}
+
+bool answerHelpOrVersion(const Arguments& arguments, const std::string& usage, const std::vector<Option>& options,
+                         const RenderSettings& defaults, const std::string& footer) {
+    if (arguments.has("help")) {
+        const std::vector<Option> always = {{"help", "", "this help (also -h)"},
+                                            {"version", "", "print the version of vct and exit"}};
+        std::printf("usage: %s\n\n%s%s%s", usage.c_str(), optionsHelp(options, defaults).c_str(),
+                    optionsHelp(always, defaults).c_str(), footer.c_str());
+        return true;
+    }
+    if (arguments.has("version")) {
+        std::printf("%s\n", versionText().c_str());
+        return true;
+    }
+    return false;
 }
 
 RenderSettings renderSettingsFromArguments(const Arguments& arguments, const std::vector<Option>& options,

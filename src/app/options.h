@@ -37,10 +37,18 @@ const std::vector<Option>& sharedOptions();
 // The shared row called `name` (an unknown name is a programming error: std::out_of_range).
 const Option& sharedOption(const std::string& name);
 
+// "vct 0.1.0": CMake's project version.
+std::string versionText();
+
+// Every command takes --help (or -h) and --version besides its options.
 Arguments parseArguments(const std::vector<std::string>& arguments, const std::vector<Option>& options);
 // "  --voxels N               voxels per side … (default 128)", one line per option; defaults
 // from `defaults`.
 std::string optionsHelp(const std::vector<Option>& options, const RenderSettings& defaults);
+// Answers --help (`usage`, the options with their defaults from `defaults`, then `footer`) and
+// --version on stdout; true when either was asked for, and the command has nothing more to do.
+bool answerHelpOrVersion(const Arguments& arguments, const std::string& usage, const std::vector<Option>& options,
+                         const RenderSettings& defaults, const std::string& footer = "");
 // `defaults` with every given setting option applied, in table order.
 RenderSettings renderSettingsFromArguments(const Arguments& arguments, const std::vector<Option>& options,
                                            RenderSettings defaults = {});

@@ -4,8 +4,10 @@
 
 #include "app/commands.h"
 #include "app/options.h"
+#include "app/progress_line.h"
 #include "app/scene_setup.h"
 #include "error.h"
+#include "io/output_paths.h"
 #include "render/renderer.h"
 #include "render/renderer_limits.h"
 
@@ -25,29 +27,44 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Option> options = renderOptions();
     const Arguments arguments = parseArguments(rawArguments, options);
-    if (arguments.has("help")) {
-        std::printf("usage: vct render --out FILE.pfm|FILE.png [options]\n\n%s",
-                    optionsHelp(options, RenderSettings{}).c_str());
+    if (answerHelpOrVersion(arguments, "vct render --out FILE.pfm|FILE.png [options]", options, RenderSettings{}))
         return 0;
-    }
+    // Every argument and the output path first: a mistake is reported at once, not after the
+    // scene has loaded and rendered (half a minute on lavapipe).
     if (!arguments.has("out")) throw Error("render needs --out FILE.pfm or FILE.png");
     const std::string outPath = arguments.text("out", "");
+    checkOutputFile(outPath, {".pfm", ".png"});
     const float exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
     const uint32_t frames = arguments.unsignedInt("frames", 1, 1, 100000);
-
+    const float gpuTimeout = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
     const RenderSettings settings = renderSettingsFromArguments(arguments, options);
+    checkSceneArguments(arguments);
+
+    ProgressLine progress("vct render");
+    progress.setStage("opening the device");
     // The device first: the scene is checked against its buffer limits while it loads.
     GpuContext context(contextOptionsFromArguments(arguments));
-    context.fenceTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
+    context.fenceTimeoutSeconds = gpuTimeout;
+    progress.setStage("loading the scene");
     const Scene scene = loadSceneFromArguments(arguments, sceneBufferLimits(context));
-    std::printf("scene %s: %zu triangles, %zu lights, on %s\n", scene.name.c_str(), scene.triangleCount(),
-                scene.lights.size(), context.deviceName().c_str());
+    progress.hideWhile([&] {
+        printSceneWarnings(scene);
+        std::printf("scene %s: %zu triangles, %zu lights, on %s\n", scene.name.c_str(), scene.triangleCount(),
+                    scene.lights.size(), context.deviceName().c_str());
+    });
 
+    progress.setStage("preparing the passes");
     Renderer renderer(context, scene, settings);
     FrameStats stats;
-    for (uint32_t frame = 0; frame < frames; ++frame) stats = renderer.renderFrame();
+    for (uint32_t frame = 0; frame < frames; ++frame) {
+        progress.setStage(frames == 1 ? std::string("rendering")
+                                      : "frame " + std::to_string(frame + 1) + " of " + std::to_string(frames));
+        stats = renderer.renderFrame();
+    }
+    progress.setStage("writing " + outPath);
     const Image image = renderer.readImage();
     writeImage(outPath, image, exposure);
+    progress.finish();
 
     for (const PassTime& pass : stats.passes)
         std::printf("  %-10s %8.3f ms GPU\n", pass.name.c_str(), pass.milliseconds);

@@ -1,7 +1,8 @@
 #include "app/scene_setup.h"
 
+#include <algorithm>
 #include <cstdio>
-#include <sstream>
+#include <filesystem>
 
 #include "error.h"
 #include "render/camera.h"
@@ -9,15 +10,48 @@
 
 namespace vct {
 
+SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
+    SceneOverrides overrides;
+    overrides.cameraPosition = arguments.vector3("camera-pos");
+    overrides.cameraTarget = arguments.vector3("camera-target");
+    if (arguments.has("fov")) overrides.yfovDegrees = arguments.number("fov", 45.0f, 1.0f, 179.0f);
+    overrides.lightDirection = arguments.vector3("light-dir");
+    if (overrides.lightDirection && glm::length(*overrides.lightDirection) < 1e-6f)
+        throw Error("--light-dir must not be the zero vector");
+    if (arguments.has("light-intensity"))
+        overrides.lightIntensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
+    return overrides;
+}
+
+void checkSceneArguments(const Arguments& arguments) {
+    sceneOverridesFromArguments(arguments);
+    checkSceneName(arguments.text("scene", "cornell"), "--scene");
+}
+
+void checkSceneName(const std::string& scene, const std::string& option) {
+    const std::vector<std::string> builtins = builtinSceneNames();
+    if (std::find(builtins.begin(), builtins.end(), scene) != builtins.end()) return;
+    std::error_code error;
+    if (std::filesystem::exists(scene, error)) return;
+    const std::string extension = std::filesystem::path(scene).extension().string();
+    if (extension == ".gltf" || extension == ".glb") throw Error(scene + ": file not found");
+    std::string names;
+    for (const std::string& name : builtins) names += (names.empty() ? "" : ", ") + name;
+    throw Error(option + " '" + scene + "' is neither a file nor a built-in scene (" + names + ")");
+}
+
 Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits& limits) {
     LoadOptions options;
     options.bufferLimits = limits;
     options.strict = arguments.has("strict");
     options.allowedRoot = arguments.text("allowed-root", "");
     Scene scene = loadScene(arguments.text("scene", "cornell"), options);
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
-    applyCameraAndLightOverrides(arguments, scene);
+    applySceneOverrides(sceneOverridesFromArguments(arguments), scene);
     return scene;
+}
+
+void printSceneWarnings(const Scene& scene) {
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
 }
 
 ContextOptions contextOptionsFromArguments(const Arguments& arguments) {
@@ -27,29 +61,26 @@ ContextOptions contextOptionsFromArguments(const Arguments& arguments) {
     return options;
 }
 
-void applyCameraAndLightOverrides(const Arguments& arguments, Scene& scene) {
+void applySceneOverrides(const SceneOverrides& overrides, Scene& scene) {
     if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.bounds()));
     Camera& camera = scene.cameras.front();
-    const std::optional<glm::vec3> position = arguments.vector3("camera-pos");
-    const std::optional<glm::vec3> target = arguments.vector3("camera-target");
-    if (position || target)
-        aimCamera(camera, position.value_or(camera.position), target.value_or(camera.position + camera.forward));
-    if (arguments.has("fov")) camera.yfov = glm::radians(arguments.number("fov", 45.0f, 1.0f, 179.0f));
+    if (overrides.cameraPosition || overrides.cameraTarget)
+        aimCamera(camera, overrides.cameraPosition.value_or(camera.position),
+                  overrides.cameraTarget.value_or(camera.position + camera.forward));
+    if (overrides.yfovDegrees) camera.yfov = glm::radians(*overrides.yfovDegrees);
 
     // --light-intensity sets the scene's first sun, or the one --light-dir adds; a scene without a
     // sun and no --light-dir has nothing it could set, which is said rather than ignored.
     Light* sun = nullptr;
     for (Light& light : scene.lights)
         if (light.type == LightType::Directional) sun = sun ? sun : &light;
-    const std::optional<glm::vec3> direction = arguments.vector3("light-dir");
-    if (!direction && arguments.has("light-intensity")) {
+    if (!overrides.lightDirection && overrides.lightIntensity) {
         if (!sun)
             throw Error("--light-intensity sets the illuminance of a sun, and scene '" + scene.name +
                         "' has none: give --light-dir too to add one");
-        sun->intensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
+        sun->intensity = *overrides.lightIntensity;
     }
-    if (direction) {
-        if (glm::length(*direction) < 1e-6f) throw Error("--light-dir must not be the zero vector");
+    if (overrides.lightDirection) {
         if (!sun) {
             scene.lights.push_back(Light{});
             sun = &scene.lights.back();
@@ -57,8 +88,8 @@ void applyCameraAndLightOverrides(const Arguments& arguments, Scene& scene) {
             sun->type = LightType::Directional;
             sun->intensity = 3.0f;
         }
-        sun->direction = glm::normalize(*direction);
-        if (arguments.has("light-intensity")) sun->intensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
+        sun->direction = glm::normalize(*overrides.lightDirection);
+        if (overrides.lightIntensity) sun->intensity = *overrides.lightIntensity;
     }
 }
 

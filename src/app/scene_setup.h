@@ -1,6 +1,7 @@
 // What the shared options (app/options.h) say of the scene, the device, the camera and the light.
 #pragma once
 
+#include <optional>
 #include <set>
 #include <string>
 
@@ -12,12 +13,31 @@
 
 namespace vct {
 
-// --scene with --strict and --allowed-root; a file naming more geometry than `limits` allow is
-// refused before it is read.
+// --camera-pos/--camera-target/--fov and --light-dir/--light-intensity, read and checked before
+// the scene loads.
+struct SceneOverrides {
+    std::optional<glm::vec3> cameraPosition, cameraTarget;
+    std::optional<float> yfovDegrees;
+    std::optional<glm::vec3> lightDirection;  // not the zero vector
+    std::optional<float> lightIntensity;
+};
+SceneOverrides sceneOverridesFromArguments(const Arguments& arguments);
+
+// Everything the scene options say that can be checked without loading the scene or a device:
+// the overrides' values, and that --scene names a built-in scene or a file that exists (the
+// loader checks the file itself). Commands call it before they touch the GPU.
+void checkSceneArguments(const Arguments& arguments);
+// That `scene` is a built-in scene's name or a file that exists; `option` names where it came from.
+void checkSceneName(const std::string& scene, const std::string& option);
+
+// --scene with --strict and --allowed-root, then the overrides; a file naming more geometry than
+// `limits` allow is refused before it is read. The scene's warnings are for the caller to show.
 Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits& limits = {});
+// "warning: ..." on stderr, one line each.
+void printSceneWarnings(const Scene& scene);
 ContextOptions contextOptionsFromArguments(const Arguments& arguments);
 
-// --camera-pos/--camera-target/--fov and --light-dir/--light-intensity applied to the scene.
-void applyCameraAndLightOverrides(const Arguments& arguments, Scene& scene);
+// The overrides applied to the scene (a scene without a camera gets the default one).
+void applySceneOverrides(const SceneOverrides& overrides, Scene& scene);
 
 }  // namespace vct

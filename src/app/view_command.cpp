@@ -7,6 +7,7 @@
 #include "app/options.h"
 #include "app/scene_setup.h"
 #include "error.h"
+#include "io/output_paths.h"
 #include "render/presets.h"
 
 #ifdef VCT_WITH_VIEWER
@@ -75,11 +76,9 @@ static std::string readTextFile(const std::string& path) {
 int runView(const std::vector<std::string>& rawArguments) {
     const std::vector<Option> rows = viewOptions();
     const Arguments arguments = parseArguments(rawArguments, rows);
-    if (arguments.has("help")) {
-        std::printf("usage: vct view [options]\n\n%s\npress F1 in the window for the controls.\n",
-                    optionsHelp(rows, viewDefaults()).c_str());
+    if (answerHelpOrVersion(arguments, "vct view [options]", rows, viewDefaults(),
+                            "\npress F1 in the window for the controls.\n"))
         return 0;
-    }
     ViewerOptions options;
     options.settings = forTheWindow(renderSettingsFromArguments(arguments, rows, viewDefaults()), arguments);
     // Without a preset, a software rasterizer starts on `fast`, with the other options over it.
@@ -96,16 +95,22 @@ int runView(const std::vector<std::string>& rawArguments) {
         options.renderScale != 0.25f)
         throw Error("--render-scale must be 1, 0.5 or 0.25");
     options.screenshotPath = arguments.text("screenshot", "");
+    if (!options.screenshotPath.empty()) checkOutputFile(options.screenshotPath, {".png"});
     options.screenshotWithUi = arguments.has("screenshot-ui");
     if (arguments.has("frames") && options.screenshotPath.empty()) throw Error("--frames needs --screenshot FILE.png");
     if (!options.screenshotPath.empty()) options.frames = arguments.unsignedInt("frames", 1, 1, 1000000);
     if (arguments.has("events") && arguments.has("script")) throw Error("give --events or --script, not both");
     if (arguments.has("events")) options.script = parseScript(arguments.text("events", ""));
     if (arguments.has("script")) options.script = parseScript(readTextFile(arguments.text("script", "")));
+    for (const ScriptEvent& event : options.script)
+        if (event.action == "screenshot") checkOutputFile(event.arguments.at(0), {".png"});
     options.context = contextOptionsFromArguments(arguments);
     options.gpuTimeoutSeconds = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
     options.sceneName = arguments.text("scene", "cornell");
+    // Every argument is checked before the scene loads and the window opens.
+    checkSceneArguments(arguments);
     options.scene = loadSceneFromArguments(arguments);
+    printSceneWarnings(options.scene);
     return runViewer(std::move(options));
 }
 

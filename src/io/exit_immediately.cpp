@@ -1,5 +1,7 @@
 #include "io/exit_immediately.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -15,7 +17,9 @@ std::string errorLinePrefix = "vct";
 void setErrorLinePrefix(const std::string& prefix) { errorLinePrefix = prefix; }
 
 void exitImmediately(const std::string& sentence) {
-    std::fprintf(stderr, "%s: error: %s\n", errorLinePrefix.c_str(), sentence.c_str());
+    // On a terminal, first erase a progress line the command may be drawing (app/progress_line.h).
+    std::fprintf(stderr, "%s%s: error: %s\n", isatty(STDERR_FILENO) == 1 ? "\r\033[K" : "", errorLinePrefix.c_str(),
+                 sentence.c_str());
     std::fflush(stderr);
     removeTemporaryFiles();
     std::_Exit(1);

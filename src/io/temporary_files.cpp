@@ -62,7 +62,7 @@ void installTemporaryFileCleanup() {
 void removeTemporaryFiles() { unlinkRegistered(); }
 
 void registerTemporaryFile(const std::string& path) {
-    if (path.size() >= kMaxPath) throw Error("cannot write '" + path + "': the path is too long");
+    if (path.size() >= kMaxPath) throw Error("the path is too long");
     const std::lock_guard<std::mutex> lock(registration);
     for (Slot& slot : slots) {
         if (slot.used.load() != 0) continue;
@@ -70,7 +70,7 @@ void registerTemporaryFile(const std::string& path) {
         slot.used.store(1);
         return;
     }
-    throw Error("cannot write '" + path + "': " + std::to_string(kSlots) + " files are being written already");
+    throw Error(std::to_string(kSlots) + " files are being written already");
 }
 
 void unregisterTemporaryFile(const std::string& path) {
@@ -113,17 +113,23 @@ void removeTemporaries(const std::vector<std::string>& temporaries) {
 
 }  // namespace
 
+// Errors name the user's path: the temporary file's name is ours, not theirs.
 void writeFilesAtomically(const std::vector<std::pair<std::string, std::string>>& pathsAndBytes) {
     std::vector<std::string> temporaries;
     for (const auto& [path, bytes] : pathsAndBytes) {
         const std::string temporary = path + ".tmp." + std::to_string(getpid());
-        registerTemporaryFile(temporary);  // before it exists: a signal from here on removes it
+        try {
+            registerTemporaryFile(temporary);  // before it exists: a signal from here on removes it
+        } catch (const Error& error) {
+            removeTemporaries(temporaries);
+            throw Error("cannot write '" + path + "': " + error.what());
+        }
         temporaries.push_back(temporary);
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         if (!out) {
             const std::string reason = std::strerror(errno);
             removeTemporaries(temporaries);
-            throw Error("cannot create '" + temporary + "': " + reason);
+            throw Error("cannot write '" + path + "': " + reason);
         }
         out.write(bytes.data(), std::streamsize(bytes.size()));
         out.flush();
@@ -131,7 +137,7 @@ void writeFilesAtomically(const std::vector<std::pair<std::string, std::string>>
             const std::string reason = std::strerror(errno);
             out.close();
             removeTemporaries(temporaries);
-            throw Error("cannot write '" + temporary + "': " + reason);
+            throw Error("cannot write '" + path + "': " + reason);
         }
     }
     const HeldSignals held;
@@ -140,7 +146,7 @@ void writeFilesAtomically(const std::vector<std::pair<std::string, std::string>>
             const std::string reason = std::strerror(errno);
             removeTemporaries(std::vector<std::string>(temporaries.begin() + long(i), temporaries.end()));
             for (size_t done = 0; done < i; ++done) unregisterTemporaryFile(temporaries[done]);
-            throw Error("cannot rename '" + temporaries[i] + "' to '" + pathsAndBytes[i].first + "': " + reason);
+            throw Error("cannot replace '" + pathsAndBytes[i].first + "': " + reason);
         }
         unregisterTemporaryFile(temporaries[i]);
     }

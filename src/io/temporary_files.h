@@ -17,8 +17,8 @@ namespace vct {
 // Installs the handler for SIGINT, SIGTERM and SIGHUP (a signal the process ignores stays ignored).
 void installTemporaryFileCleanup();
 
-// Registers `path` (to be created by the caller) for removal on a signal; throws vct::Error if the
-// path is too long for the table or the table is full. Unregister once the file is renamed or removed.
+// Registers `path` (to be created by the caller) for removal on a signal; throws vct::Error, with
+// the reason only, if the path is too long for the table or the table is full. Unregister once the file is renamed or removed.
 void registerTemporaryFile(const std::string& path);
 void unregisterTemporaryFile(const std::string& path);
 

@@ -24,21 +24,37 @@ good="$work/out.png"
 printf 'a good image from an earlier run\n' >"$good"
 cp "$good" "$work/expected"
 
-# Runs vct render with the arguments; expects exit code 1 and one error line matching $1.
-expect_refusal() {
-  local pattern="$1"
-  shift
-  "$vct" render "$@" >"$work/stdout" 2>"$work/stderr"
+# Runs `vct COMMAND` with the arguments; expects exit code 1 and one error line matching $2.
+expect_command_refusal() {
+  local command="$1" pattern="$2"
+  shift 2
+  "$vct" "$command" "$@" >"$work/stdout" 2>"$work/stderr"
   local status=$?
   [ "$status" -eq 1 ] || fail "exit code $status, expected 1"
   local errors
-  errors=$(grep -c '^vct render: error: ' "$work/stderr")
+  errors=$(grep -c "^vct $command: error: " "$work/stderr")
   [ "$errors" -eq 1 ] || fail "$errors error lines, expected exactly one"
-  grep -q '^vct render: error: .*'"$pattern" "$work/stderr" || fail "the error does not match '$pattern'"
+  grep -q "^vct $command: error: .*$pattern" "$work/stderr" || fail "the error does not match '$pattern'"
   if grep -qiE 'internal error|AddressSanitizer|runtime error|terminate called' "$work/stderr"; then
     fail "not a clean refusal"
   fi
-  echo "ok: $(grep '^vct render: error: ' "$work/stderr")"
+  echo "ok: $(grep "^vct $command: error: " "$work/stderr")"
+}
+
+expect_refusal() { expect_command_refusal render "$@"; }
+
+# Like expect_command_refusal, for a mistake that must be found before any work: with a device
+# name nothing matches, a check that came after opening the device would report the device instead;
+# and it must come in well under a second, with nothing on stdout (no "scene ..." line).
+expect_refusal_before_any_work() {
+  local command="$1"
+  shift
+  local began ended
+  began=$(date +%s%N)
+  expect_command_refusal "$command" "$@" --device no-such-vulkan-device
+  ended=$(date +%s%N)
+  [ ! -s "$work/stdout" ] || fail "work began before the refusal: $(head -c 200 "$work/stdout")"
+  [ $(( (ended - began) / 1000000 )) -lt 1000 ] || fail "the refusal took $(( (ended - began) / 1000000 )) ms"
 }
 
 expect_output_untouched() {
@@ -75,7 +91,109 @@ case "$case_name" in
     expect_refusal "131072 samples across, more than .*'s max[A-Za-z]*" --width 16384 --height 16 --supersample 8 \
       --voxels 32 --out "$good" ;;
   unwritable-output)
-    expect_refusal "cannot create '$work/no-such-folder/out.png" "${small[@]}" --out "$work/no-such-folder/out.png" ;;
+    # The default settings: rendering them takes seconds, the refusal must not.
+    expect_refusal_before_any_work render \
+      "cannot write '$work/no-such-folder/out.png': the folder '$work/no-such-folder' does not exist" \
+      --out "$work/no-such-folder/out.png" ;;
+  output-is-a-folder)
+    mkdir "$work/folder.png"
+    expect_refusal_before_any_work render "cannot write '$work/folder.png': it is a folder" --out "$work/folder.png" ;;
+  output-folder-not-writable)
+    # A folder the user may not write into. root may write anywhere, so as root the check runs as
+    # nobody (setpriv), on a copy of vct that nobody can reach.
+    mkdir -p "$work/open/locked"
+    chmod 755 "$work" "$work/open"
+    chmod 555 "$work/open/locked"
+    out="$work/open/locked/out.png"
+    if [ "$(id -u)" -eq 0 ]; then
+      command -v setpriv >/dev/null || { echo "ok: root without setpriv, nothing to check"; exit 0; }
+      cp "$vct" "$work/open/vct" && chmod 755 "$work/open/vct"
+      vct_as_nobody="$work/open/vct-as-nobody"
+      printf '#!/bin/sh\nexec setpriv --reuid=65534 --regid=65534 --clear-groups "%s" "$@"\n' "$work/open/vct" \
+        >"$vct_as_nobody"
+      chmod 755 "$vct_as_nobody"
+      vct="$vct_as_nobody"
+    fi
+    expect_refusal_before_any_work render \
+      "cannot write '$out': no permission to write into the folder '$work/open/locked'" --out "$out" ;;
+  arguments-checked-before-any-work)
+    # Each of these used to be found only after the scene had loaded or the device had opened.
+    expect_refusal_before_any_work render "must end in .pfm or .png" --out "$work/out.jpg"
+    expect_refusal_before_any_work render "\-\-voxels: the voxel resolution must be a power of two from 32 to 512, not 48" \
+      --voxels 48 --out "$good"
+    expect_refusal_before_any_work render "\-\-camera-pos must be three numbers" --camera-pos 1,2 --out "$good"
+    expect_refusal_before_any_work render "\-\-fov must be a number from 1 to 179, not '0'" --fov 0 --out "$good"
+    expect_refusal_before_any_work render "\-\-light-dir must not be the zero vector" --light-dir 0,0,0 --out "$good"
+    expect_refusal_before_any_work render "\-\-gpu-timeout must be a number" --gpu-timeout 0 --out "$good"
+    expect_refusal_before_any_work render "\-\-scene 'cornel' is neither a file nor a built-in scene (cornell, " \
+      --scene cornel --out "$good"
+    expect_refusal_before_any_work render "$work/missing.glb: file not found" --scene "$work/missing.glb" --out "$good"
+    expect_refusal_before_any_work bench "nosuch.glb: file not found" --scenes cornell,nosuch.glb --out-dir "$work/b"
+    expect_refusal_before_any_work bench "\-\-reference-dir '$work/none' is not a folder" --reference-dir "$work/none" \
+      --scenes cornell --out-dir "$work/b"
+    "$vct" view --help >/dev/null 2>&1 || { echo "ok: this vct has no viewer, its checks not run"; exit 0; }
+    expect_refusal_before_any_work view "cannot write '$work/no/shot.png': the folder '$work/no' does not exist" \
+      --screenshot "$work/no/shot.png"
+    expect_refusal_before_any_work view "cannot write '$work/no/shot.png'" --events "3 screenshot $work/no/shot.png"
+    expect_refusal_before_any_work view "cannot write '$work/shot.jpg': the output must end in .png" \
+      --screenshot "$work/shot.jpg" ;;
+  bench-checks-every-scene-before-measuring)
+    # A broken second scene fails the run before the first is measured: every scene loads first.
+    printf '{"asset": {"version": "2.0"}, "meshes": [ {"primitives": [' >"$work/broken.gltf"
+    expect_command_refusal bench "broken.gltf: not a valid glTF file" --quick --scenes "cornell,$work/broken.gltf" \
+      --frames 1 --warmup 0 --out-dir "$work/b"
+    if grep -q "v32 c" "$work/stdout"; then fail "a setting was measured before the broken scene was found"; fi ;;
+  bench-reports-errors-where-there-are-references)
+    # sun-room has 128x128 references: its errors are reported, and no line says there are none.
+    "$vct" bench --quick --scenes sun-room --frames 1 --warmup 0 --no-failure-modes --out-dir "$work/b" \
+      >"$work/stdout" 2>"$work/stderr" || fail "the bench failed"
+    if grep -q "no 128x128 reference" "$work/stdout"; then fail "it says sun-room has no reference"; fi
+    grep -q "sun-room .*relMSE full" "$work/stdout" || fail "no error reported for sun-room"
+    # Without references (an empty folder), it says so and reports no error.
+    mkdir "$work/no-references"
+    "$vct" bench --quick --scenes sun-room --frames 1 --warmup 0 --reference-dir "$work/no-references" \
+      --out-dir "$work/b" >"$work/stdout" 2>"$work/stderr" || fail "the bench without references failed"
+    grep -q "sun-room: no 128x128 reference in $work/no-references, so no error is reported" "$work/stdout" ||
+      fail "no line says sun-room has no reference"
+    if grep -q "relMSE full" "$work/stdout"; then fail "errors reported without a reference"; fi
+    echo "ok: errors where there are references, a note where there are none" ;;
+  version)
+    # The version CMake's project() declares (the test's VCT_EXPECTED_VERSION), from vct and each command.
+    commands=("" render bench)
+    if "$vct" view --help >/dev/null 2>&1; then commands+=(view); fi
+    for command in "${commands[@]}"; do
+      # shellcheck disable=SC2086
+      "$vct" $command --version >"$work/stdout" 2>"$work/stderr" || fail "vct $command --version failed"
+      [ "$(cat "$work/stdout")" = "vct $VCT_EXPECTED_VERSION" ] ||
+        fail "vct $command --version printed '$(cat "$work/stdout")', not 'vct $VCT_EXPECTED_VERSION'"
+      [ ! -s "$work/stderr" ] || fail "vct $command --version wrote to stderr"
+    done
+    echo "ok: vct $VCT_EXPECTED_VERSION" ;;
+  short-help)
+    # -h as well as --help, for vct and each command, on stdout with exit code 0.
+    "$vct" -h >"$work/stdout" 2>"$work/stderr" || fail "vct -h failed"
+    grep -q "^usage: vct <command>" "$work/stdout" || fail "vct -h printed no usage"
+    grep -q -- "--version" "$work/stdout" || fail "vct -h does not mention --version"
+    commands=(render bench)
+    if "$vct" view --help >/dev/null 2>&1; then commands+=(view); fi
+    for command in "${commands[@]}"; do
+      "$vct" "$command" -h >"$work/stdout" 2>"$work/stderr" || fail "vct $command -h failed"
+      grep -q "^usage: vct $command" "$work/stdout" || fail "vct $command -h printed no usage"
+      grep -q -- "^  --version " "$work/stdout" || fail "vct $command -h does not list --version"
+    done
+    echo "ok: -h prints each usage" ;;
+  progress-only-on-a-terminal)
+    # stderr to a file: not a byte of progress. stderr on a terminal (script(1) gives the command
+    # a pseudo-terminal): a line redrawn in place with '\r', erased ('\r' ESC [K) before the results.
+    "$vct" render "${small[@]}" --out "$work/out.pfm" >"$work/stdout" 2>"$work/stderr" || fail "the render failed"
+    [ ! -s "$work/stderr" ] || fail "progress written to a stderr that is not a terminal"
+    command -v script >/dev/null || { echo "ok: no script(1) to give a terminal, the rest not checked"; exit 0; }
+    script -qfec "$(printf '%q ' "$vct" render "${small[@]}" --out "$work/out.pfm")" /dev/null >"$work/terminal" \
+      2>"$work/stderr" </dev/null || fail "the render on a terminal failed"
+    grep -q $'\rvct render: rendering, [0-9]* s' "$work/terminal" || fail "no progress line on the terminal"
+    grep -q $'\r\033\\[K  shadow' "$work/terminal" || fail "the progress line was not erased before the results"
+    grep -q "^wrote $work/out.pfm" <(tr -d '\r' <"$work/terminal") || fail "the results are missing"
+    echo "ok: progress on a terminal only" ;;
   interrupted)
     # Interrupted mid-render (Ctrl-C): the earlier image stays as it was.
     timeout -s INT 3 "$vct" render --frames 100000 --width 64 --height 64 --voxels 32 --out "$good" \
