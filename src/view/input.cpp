@@ -60,9 +60,10 @@ int keyFromName(const std::string& rawName) {
         if (number >= 1 && number <= 12) return GLFW_KEY_F1 + number - 1;
     }
     static const std::map<std::string, int> named = {
-        {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT},      {"up", GLFW_KEY_UP},
-        {"down", GLFW_KEY_DOWN}, {"shift", GLFW_KEY_LEFT_SHIFT}, {"ctrl", GLFW_KEY_LEFT_CONTROL},
-        {"tab", GLFW_KEY_TAB},   {"space", GLFW_KEY_SPACE},      {"escape", GLFW_KEY_ESCAPE}};
+        {"left", GLFW_KEY_LEFT},      {"right", GLFW_KEY_RIGHT},      {"up", GLFW_KEY_UP},
+        {"down", GLFW_KEY_DOWN},      {"shift", GLFW_KEY_LEFT_SHIFT}, {"ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"tab", GLFW_KEY_TAB},        {"space", GLFW_KEY_SPACE},      {"escape", GLFW_KEY_ESCAPE},
+        {"[", GLFW_KEY_LEFT_BRACKET}, {"]", GLFW_KEY_RIGHT_BRACKET}};
     const auto found = named.find(name);
     return found == named.end() ? -1 : found->second;
 }

@@ -2,7 +2,8 @@
 //
 // A script (`vct view --events "..."` or `--script FILE`) drives the viewer without a person, for
 // tests: entries separated by newlines or ';', each "FRAME ACTION ARGUMENTS", '#' starts a comment.
-//   key NAME down|up|press     NAME: a letter or digit, F1..F12, left, right, up, down, shift, ctrl, tab
+//   key NAME down|up|press     NAME: a letter or digit, F1..F12, left, right, up, down, shift, ctrl, tab,
+//                              space, escape, [ or ]
 //   mouse X Y                  move the cursor to window coordinates X, Y
 //   button left|right down|up
 //   scroll DY

@@ -336,7 +336,11 @@ void Viewer::handleKeys(float seconds) {
             case GLFW_KEY_LEFT_BRACKET:
                 if (settings.shading.debugVoxelMip > 0) --settings.shading.debugVoxelMip;
                 break;
-            case GLFW_KEY_RIGHT_BRACKET: ++settings.shading.debugVoxelMip; break;  // clamped by the panel
+            case GLFW_KEY_RIGHT_BRACKET:
+                // The finest level is 0; the coarsest is the volume's last (the panels may be hidden).
+                if (settings.shading.debugVoxelMip + 1 < renderer_->volumes().radiance.desc.mipLevels)
+                    ++settings.shading.debugVoxelMip;
+                break;
             case GLFW_KEY_L: state_.sun.animate = !state_.sun.animate; break;
             case GLFW_KEY_F12:
             case GLFW_KEY_P: state_.requestScreenshot = true; break;
