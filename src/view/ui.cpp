@@ -11,6 +11,14 @@
 #include "scene/load.h"
 
 namespace vct {
+namespace {
+
+// The docked settings window's width, and about the profiler's: a window narrower than both hides
+// the profiler.
+constexpr float kSettingsWidth = 370.0f;
+constexpr float kProfilerWidth = 330.0f;
+
+}  // namespace
 
 void FrameHistory::add(float frameMs, const FrameStats& stats) {
     frameMilliseconds.push_back(frameMs);
@@ -48,18 +56,37 @@ static void powerOfTwoCombo(const char* label, uint32_t& value, uint32_t smalles
     ImGui::EndCombo();
 }
 
+// Text in the disabled colour, wrapped at the window's edge instead of cut there.
+static void wrappedNote(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
+// A button on the current line if it fits before the window's edge, else on the next.
+static bool flowingButton(const char* label, bool first) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (!first && ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+    return ImGui::Button(label);
+}
+
 static void sceneSection(ViewerState& state) {
     if (!ImGui::CollapsingHeader("Scene")) return;
     ImGui::Text("%s", state.sceneName.c_str());
+    bool first = true;
     for (const std::string& name : builtinSceneNames()) {
-        if (ImGui::Button(name.c_str())) state.requestedScene = name;
-        ImGui::SameLine();
+        if (flowingButton(name.c_str(), first)) state.requestedScene = name;
+        first = false;
     }
-    ImGui::NewLine();
-    ImGui::InputText("glTF path", state.scenePathField, sizeof state.scenePathField);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Load").x -
+                            2.0f * style.FramePadding.x - style.ItemSpacing.x);
+    ImGui::InputText("##glTF path", state.scenePathField, sizeof state.scenePathField);
     ImGui::SameLine();
     if (ImGui::Button("Load") && state.scenePathField[0] != '\0') state.requestedScene = state.scenePathField;
-    ImGui::TextDisabled("or drop a .gltf/.glb file on the window");
+    wrappedNote("a .gltf/.glb path, or drop the file on the window");
 }
 
 static void lightSection(ViewerState& state) {
@@ -81,7 +108,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
     // Two columns, each component labelled with its key (1…7, in the table's order).
     for (size_t i = 0; i < componentTable().size(); ++i) {
         const ComponentInfo& component = componentTable()[i];
-        if (i % 2 == 1) ImGui::SameLine(165);
+        if (i % 2 == 1) ImGui::SameLine(0.5f * ImGui::GetWindowContentRegionMax().x);
         const std::string label = std::to_string(i + 1) + " " + component.label;
         ImGui::Checkbox(label.c_str(), &(settings.shading.components.*component.member));
     }
@@ -118,7 +145,7 @@ static void coneSection(RenderSettings& settings) {
 static void resolutionSection(ViewerState& state) {
     RenderSettings& settings = state.settings;
     if (!ImGui::CollapsingHeader("Resolution")) return;
-    ImGui::TextDisabled("all but the render scale build a new renderer");
+    wrappedNote("all but the render scale build a new renderer");
     int scale = state.renderScale >= 1.0f ? 0 : state.renderScale >= 0.5f ? 1 : 2;
     ImGui::Combo("render scale", &scale,
                  "1 (window size)\0"
@@ -139,7 +166,9 @@ static void resolutionSection(ViewerState& state) {
 }
 
 static void presetRow(ViewerState& state) {
-    ImGui::Text("presets:");
+    ImGui::Checkbox("profiler", &state.showProfiler);
+    ImGui::SameLine();
+    ImGui::Text(" presets:");
     for (const auto& [name, preset] : renderPresets()) {
         ImGui::SameLine();
         if (!ImGui::Button(name.c_str())) continue;
@@ -156,11 +185,17 @@ static void presetRow(ViewerState& state) {
 }
 
 void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(330, 0), ImVec2(330, float(facts.height) - 16.0f));
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::PushItemWidth(160);
+    // Docked to the left edge from the top to the status bar, opaque, and collapsible by its title
+    // bar's arrow; what does not fit scrolls. The camera ignores the mouse over it (WantCaptureMouse).
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(viewport->Pos, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(
+        ImVec2(std::min(kSettingsWidth, viewport->Size.x), std::max(viewport->Size.y - state.statusBarHeight, 60.0f)),
+        ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    // Controls take what the labels (up to "local shadow map") leave.
+    ImGui::PushItemWidth(-ImGui::CalcTextSize("local shadow map  ").x);
     presetRow(state);
     sceneSection(state);
     lightSection(state);
@@ -175,24 +210,54 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
         ImGui::Checkbox("screenshots include the UI", &state.screenshotWithUi);
         if (ImGui::Button("screenshot (F12)")) state.requestScreenshot = true;
     }
-    if (!state.notice.empty()) ImGui::TextWrapped("%s", state.notice.c_str());
     ImGui::PopItemWidth();
     ImGui::End();
 }
 
-void drawProfilerWindow(const ViewerState& state, const UiFacts& facts) {
+void drawStatusBar(ViewerState& state) {
+    static const char* const hint =
+        "F1: the controls | Tab: hide the panels | right mouse + W A S D: fly | drop a .gltf/.glb to open it";
+    const bool showHint = state.showHint && !state.guideOpened;
+    if (state.notice.empty() && !showHint) {
+        state.statusBarHeight = 0.0f;
+        return;
+    }
+    // Across the bottom, as tall as its wrapped lines: nothing in it is cut at the window's edge.
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(viewport->Size.x - 8.0f, 8.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("Profiler", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + viewport->Size.y), ImGuiCond_Always,
+                            ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(viewport->Size.x, 0.0f), ImVec2(viewport->Size.x, viewport->Size.y));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    if (!state.notice.empty()) ImGui::TextWrapped("%s", state.notice.c_str());
+    if (showHint) wrappedNote(hint);
+    state.statusBarHeight = ImGui::GetWindowSize().y;
+    ImGui::End();
+}
+
+void drawProfilerWindow(ViewerState& state, const UiFacts& facts) {
+    // A small opaque overlay in the top right corner. Where it would cover the settings (a window
+    // getting narrower than both), it is hidden; the settings' "profiler" box shows it again.
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const bool narrow = viewport->Size.x < kSettingsWidth + kProfilerWidth;
+    if (narrow && !state.wasNarrow) state.showProfiler = false;
+    state.wasNarrow = narrow;
+    if (!state.showProfiler) return;
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x, viewport->Pos.y), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("Profiler", &state.showProfiler, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
     const FrameHistory& history = state.history;
     const float average = history.averageFrameMilliseconds();
     ImGui::Text("frame %.1f ms (%.1f fps), averaged", average, average > 0.0f ? 1000.0f / average : 0.0f);
     const std::vector<float> frames(history.frameMilliseconds.begin(), history.frameMilliseconds.end());
     const std::vector<float> gpu(history.gpuMilliseconds.begin(), history.gpuMilliseconds.end());
-    if (!frames.empty()) {
+    if (!frames.empty() && ImGui::TreeNode("history")) {
         ImGui::PlotLines("frame ms", frames.data(), int(frames.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(240, 40));
         ImGui::PlotLines("GPU ms", gpu.data(), int(gpu.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(240, 40));
+        ImGui::TreePop();
     }
     if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("pass");
@@ -225,8 +290,8 @@ void drawProfilerWindow(const ViewerState& state, const UiFacts& facts) {
     ImGui::Separator();
     ImGui::Text("window %ux%u, image %ux%u, %s", facts.width, facts.height, facts.renderWidth, facts.renderHeight,
                 facts.presentMode.c_str());
-    ImGui::Text("voxels %u^3 = %.1f M, %u mips", facts.voxelResolution,
-                double(facts.voxelResolution) * facts.voxelResolution * facts.voxelResolution / 1e6, facts.voxelMips);
+    ImGui::Text("voxels %u^3 = %s, %u mips", facts.voxelResolution, voxelCountText(facts.voxelResolution).c_str(),
+                facts.voxelMips);
     ImGui::Text("%zu triangles, %zu lights", facts.triangles, facts.lights);
     ImGui::Text("device memory %.1f MiB", double(facts.deviceMemoryBytes) / (1024.0 * 1024.0));
     ImGui::TextDisabled("%s", facts.deviceName.c_str());
@@ -248,14 +313,44 @@ void drawErrorWindow(ViewerState& state) {
     ImGui::PopStyleColor();
 }
 
-void drawGuideWindow(ViewerState& state) {
+void drawWarningsWindow(ViewerState& state) {
+    if (state.warnings.empty()) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y - 8.0f), ImGuiCond_Always,
-                            ImVec2(0.5f, 1.0f));
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    // No inputs: the guide never takes the mouse from the camera.
+    ImGui::SetNextWindowPos(
+        ImVec2(viewport->Pos.x + viewport->Size.x * 0.5f, viewport->Pos.y + viewport->Size.y * 0.3f), ImGuiCond_Always,
+        ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(viewport->Size.x * 0.8f, viewport->Size.y * 0.5f));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.30f, 0.22f, 0.02f, 1.0f));
+    ImGui::Begin("Warnings", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushTextWrapPos(viewport->Size.x * 0.75f);
+    for (const std::string& warning : state.warnings) ImGui::TextWrapped("- %s", warning.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("dismiss")) state.warnings.clear();
+    ImGui::End();
+    ImGui::PopStyleColor();
+}
+
+std::string voxelCountText(uint32_t resolution) {
+    const uint64_t count = uint64_t(resolution) * resolution * resolution;
+    char text[32];
+    if (count < 1000000) std::snprintf(text, sizeof text, "%llu", static_cast<unsigned long long>(count));
+    else std::snprintf(text, sizeof text, "%.1f M", double(count) / 1e6);
+    return text;
+}
+
+void drawGuideWindow(ViewerState& state) {
+    // Centred, opaque, at most the window's size less a margin: the descriptions wrap, and what
+    // does not fit scrolls (so the guide takes the mouse while it is over it).
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float width = std::min(640.0f, viewport->Size.x - 16.0f);
+    ImGui::SetNextWindowPos(
+        ImVec2(viewport->Pos.x + viewport->Size.x * 0.5f, viewport->Pos.y + viewport->Size.y * 0.5f), ImGuiCond_Always,
+        ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, viewport->Size.y - 16.0f));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    state.guideOpened = true;  // the status bar's hint to it has done its work
     ImGui::Begin("Guide (F1 or H hides it)", &state.showGuide,
-                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoCollapse);
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove);
     static const char* const rows[][2] = {
         {"right mouse + drag", "look around"},
         {"W A S D", "fly forward, left, back, right (hold right mouse or not)"},
@@ -266,8 +361,9 @@ void drawGuideWindow(ViewerState& state) {
         {"R", "reset to the scene camera"},
         {"arrow keys", "move the sun (left/right azimuth, up/down elevation)"},
         {"Ctrl + left drag", "move the sun"},
-        {"1 .. 7", "toggle direct diffuse, direct specular, indirect diffuse,"},
-        {"", "indirect specular, ambient occlusion, emission, shadows"},
+        {"1 .. 7",
+         "toggle direct diffuse, direct specular, indirect diffuse, indirect specular, ambient occlusion, emission, "
+         "shadows"},
         {"M", "mode: full, direct, indirect"},
         {"V", "next view: lit, base colour, normal, depth, AO, voxels"},
         {"[ / ]", "voxel mip shown by the voxel views"},
@@ -278,13 +374,15 @@ void drawGuideWindow(ViewerState& state) {
         {"drop a file", "load a .gltf/.glb scene"},
         {"Esc", "quit"},
     };
-    if (ImGui::BeginTable("controls", 2, ImGuiTableFlags_SizingFixedFit)) {
+    if (ImGui::BeginTable("controls", 2)) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& row : rows) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", row[0]);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[1]);
+            ImGui::TextWrapped("%s", row[1]);
         }
         ImGui::EndTable();
     }

@@ -21,9 +21,18 @@ struct UiFacts {
 };
 
 void drawSettingsWindow(ViewerState& state, const UiFacts& facts);
-void drawProfilerWindow(const ViewerState& state, const UiFacts& facts);
+void drawProfilerWindow(ViewerState& state, const UiFacts& facts);
 void drawGuideWindow(ViewerState& state);
+// The bottom line: the last notice (where a screenshot went, why the preset changed) and, until
+// the guide has been opened once, a one-line hint to it. Draw it before the settings window, which
+// ends above it.
+void drawStatusBar(ViewerState& state);
 // The last failure the user caused (a scene that did not load), until dismissed.
 void drawErrorWindow(ViewerState& state);
+// The scene's warnings (a missing texture...), which also go to stderr, until dismissed.
+void drawWarningsWindow(ViewerState& state);
+
+// "32768" for 32³, "2.1 M" for 128³.
+std::string voxelCountText(uint32_t resolution);
 
 }  // namespace vct

@@ -146,7 +146,7 @@ Viewer::Viewer(ViewerOptions options)
                         "): started on the fast preset, about 10 fps at 960x540; the presets above change it";
     state_.exposure = options_.exposure;
     state_.vsync = shownVsync_ = options_.vsync;
-    state_.showGuide = options_.showGuide;
+    state_.showHint = options_.showHint;
     state_.screenshotWithUi = options_.screenshotWithUi;
     // With other settings, software rasterizers shade a quarter of the pixels unless told
     // otherwise: a camera move at 960x540 on `balanced` costs 0.2 s on lavapipe.
@@ -161,6 +161,7 @@ Viewer::Viewer(ViewerOptions options)
 
     scene_ = std::move(options_.scene);
     state_.sceneName = options_.sceneName;
+    state_.warnings = scene_.warnings;  // printed on stderr by `vct view` already
     if (scene_.cameras.empty()) scene_.cameras.push_back(defaultCamera(scene_.bounds()));
     sunIndex_ = ensureSun(scene_);
     state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
@@ -266,6 +267,7 @@ bool Viewer::loadScene(const std::string& name) {
     state_.error.clear();
     state_.sceneName = name;
     for (const std::string& warning : scene_.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    state_.warnings = scene_.warnings;
     state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
     state_.sun.intensity = scene_.lights[sunIndex_].intensity;
     shownSun_ = state_.sun;
@@ -610,10 +612,12 @@ bool Viewer::loopIteration() {
 
     const UiFacts uiFacts = facts();
     if (state_.showPanels) {
+        drawStatusBar(state_);
         drawSettingsWindow(state_, uiFacts);
         drawProfilerWindow(state_, uiFacts);
     }
     if (state_.showGuide) drawGuideWindow(state_);
+    drawWarningsWindow(state_);
     drawErrorWindow(state_);
     ImGui::Render();
 

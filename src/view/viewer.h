@@ -25,7 +25,7 @@ struct ViewerOptions {
     double gpuTimeoutSeconds = 120.0;
     float exposure = 1.0f;
     bool vsync = true;
-    bool showGuide = true;
+    bool showHint = true;  // the status bar's one-line hint to the guide (F1)
     // Scripted use: save the image shown on frame `frames` to `screenshotPath` and exit
     // (frames = 0: run until the window closes).
     std::string screenshotPath;

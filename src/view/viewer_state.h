@@ -36,7 +36,12 @@ struct ViewerState {
     float exposure = 1.0f;
     float renderScale = 1.0f;  // renderer image size / window size
     SunControl sun;
-    bool showGuide = true;
+    bool showGuide = false;  // F1 opens it; the status bar says so
+    bool showHint = true;    // that one-line hint (--no-guide: neither)
+    bool guideOpened = false;
+    float statusBarHeight = 0.0f;  // last frame's, so the settings window ends above it
+    bool showProfiler = true;
+    bool wasNarrow = false;  // the window was too narrow for the settings and the profiler side by side
     bool showPanels = true;
     bool vsync = true;
     bool screenshotWithUi = false;
@@ -50,8 +55,9 @@ struct ViewerState {
     bool cameraIsOrbiting = false;
     float cameraSpeed = 1.0f;
 
-    std::string error;   // the last failure the user caused (a scene that did not load)
-    std::string notice;  // e.g. where a screenshot went
+    std::string error;                  // the last failure the user caused (a scene that did not load)
+    std::vector<std::string> warnings;  // the scene's, e.g. a missing texture
+    std::string notice;                 // e.g. where a screenshot went
     FrameHistory history;
 };
 

@@ -3,6 +3,7 @@
 // screenshots it saves show what the input should have changed.
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -37,6 +38,18 @@ double meanValue(const Png& png) {
     return png.rgb.empty() ? 0.0 : sum / double(png.rgb.size());
 }
 
+// The rectangle [x0, x1) × [y0, y1) of `png`.
+Png crop(const Png& png, int x0, int y0, int x1, int y1) {
+    Png part;
+    if (png.rgb.empty() || x1 > png.width || y1 > png.height) return part;
+    part.width = x1 - x0;
+    part.height = y1 - y0;
+    for (int y = y0; y < y1; ++y)
+        part.rgb.insert(part.rgb.end(), png.rgb.begin() + (size_t(y) * png.width + x0) * 3,
+                        png.rgb.begin() + (size_t(y) * png.width + x1) * 3);
+    return part;
+}
+
 // Fraction of pixels whose colour differs by more than a few steps in any channel.
 double changedFraction(const Png& a, const Png& b) {
     if (a.width != b.width || a.height != b.height || a.rgb.empty()) return 1.0;
@@ -62,14 +75,16 @@ protected:
     // Runs `vct view` in `directory` on a small window with 64³ voxels and one bounce (so that a
     // frame changes only what the script changed: converging bounces brighten the first frames,
     // which View.ProgressiveBouncesSettleAndThenTheImageStays checks); returns the exit code.
-    int runViewer(const std::string& arguments) {
+    // `hint`: start with the status bar's one-line hint to the guide, as a user does (the tests
+    // otherwise pass --no-guide, so that screenshots with the panels show only what they test).
+    int runViewer(const std::string& arguments, bool hint = false) {
         const fs::path logPath = directory / "log.txt";
         const std::string command = "cd '" + directory.string() +
                                     "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
-                                    " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE
-                                    " view --validate --no-guide --voxels 64 --shadow-map 512 --bounces 1 "
-                                    "--width 320 --height 180 " +
-                                    arguments + " > '" + logPath.string() + "' 2>&1";
+                                    " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
+                                    std::string(hint ? "" : "--no-guide ") +
+                                    "--voxels 64 --shadow-map 512 --bounces 1 --width 320 --height 180 " + arguments +
+                                    " > '" + logPath.string() + "' 2>&1";
         const int status = std::system(command.c_str());
         std::ifstream logFile(logPath);
         std::ostringstream text;
@@ -244,6 +259,73 @@ TEST_F(View, BracketKeysFromAScriptStepThroughTheVoxelMips) {
     EXPECT_GT(changedFraction(screenshot("mip0.png"), screenshot("mip1.png")), 0.05) << log;
     EXPECT_LT(changedFraction(screenshot("mip0.png"), screenshot("back.png")), 0.001) << log;
     EXPECT_FALSE(screenshot("last.png").rgb.empty()) << log;
+}
+
+TEST_F(View, TheCameraIgnoresTheMouseOverTheSettings) {
+    // 640×360: the settings are docked on the left (370 px wide). A right-button drag over them
+    // leaves the image as it was; the same drag over the image turns the camera.
+    const std::string events =
+        "1 screenshot before.png; 2 mouse 100 200; 3 button right down; 4 mouse 200 150; 5 mouse 250 120;"
+        "6 button right up; 7 screenshot over_panel.png; 8 mouse 450 200; 9 button right down; 10 mouse 550 150;"
+        "11 mouse 600 120; 12 button right up; 13 screenshot over_image.png; 14 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("over_panel.png")), 0.001) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("over_image.png")), 0.05) << log;
+}
+
+TEST_F(View, StartsWithAHintNotTheGuideAndF1OpensTheGuide) {
+    // Beside the docked settings (x < 370) and above the status bar, the image is uncovered at
+    // start: the panels' screenshot equals the plain one there. F1 covers it with the guide.
+    const std::string events =
+        "2 screenshot plain.png; 3 screenshot panels.png ui; 4 key F1 press; 5 screenshot guide.png ui; 6 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'", true), 0) << log;
+    const Png plain = crop(screenshot("plain.png"), 400, 60, 620, 280);
+    ASSERT_FALSE(plain.rgb.empty()) << log;
+    EXPECT_LT(changedFraction(plain, crop(screenshot("panels.png"), 400, 60, 620, 280)), 0.001) << log;
+    EXPECT_GT(changedFraction(plain, crop(screenshot("guide.png"), 400, 60, 620, 280)), 0.3) << log;
+    // The hint is a line at the bottom, over the image.
+    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 400, 340, 640, 360),
+                              crop(screenshot("panels.png"), 400, 340, 640, 360)),
+              0.05)
+        << log;
+}
+
+TEST_F(View, TheSettingsAreOpaque) {
+    // Flying changes the image; the settings' pixels stay as they were, as nothing shows through
+    // (the translucent panels let a fifth of the image through).
+    const std::string events =
+        "2 screenshot before.png ui; 3 key W down; 7 key W up; 8 screenshot after.png ui; 9 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    const Png before = screenshot("before.png"), after = screenshot("after.png");
+    EXPECT_GT(changedFraction(crop(before, 400, 60, 620, 280), crop(after, 400, 60, 620, 280)), 0.05) << log;
+    // (Left of the scroll bar and above the status bar, which "saved before.png" grows.)
+    EXPECT_LT(changedFraction(crop(before, 0, 40, 340, 300), crop(after, 0, 40, 340, 300)), 0.001) << log;
+}
+
+TEST_F(View, SceneWarningsAreShownInTheWindow) {
+    // A triangle whose base-colour texture is missing loads with a warning: on stderr, and in a
+    // window. With the texture there (1×1 white: the same colour as the fallback, so the same
+    // image) there is no warning, and the panels' screenshots differ only by that window.
+    std::ofstream(directory / "textured.gltf")
+        << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
+        << R"(AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],)"
+        << R"("max":[1,1,1]}],"images":[{"uri":"texture.png"}],"textures":[{"source":0}],)"
+        << R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
+        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
+        << R"("scenes":[{"nodes":[0]}],"scene":0})";
+    const std::string arguments = "--scene textured.gltf --width 640 --height 360 --events '2 screenshot ";
+    ASSERT_EQ(runViewer(arguments + "missing_plain.png; 3 screenshot missing_panels.png ui; 4 quit'"), 0) << log;
+    EXPECT_NE(log.find("warning: textured.gltf: images[0]: 'texture.png' cannot be opened"), std::string::npos) << log;
+    const unsigned char white[3] = {255, 255, 255};
+    ASSERT_TRUE(stbi_write_png((directory / "texture.png").c_str(), 1, 1, 3, white, 3));
+    ASSERT_EQ(runViewer(arguments + "found_plain.png; 3 screenshot found_panels.png ui; 4 quit'"), 0) << log;
+    for (const char* name : {"missing_plain.png", "missing_panels.png", "found_plain.png", "found_panels.png"})
+        ASSERT_FALSE(screenshot(name).rgb.empty()) << name << " was not saved\n" << log;
+    EXPECT_EQ(log.find("warning:"), std::string::npos) << log;
+    EXPECT_LT(changedFraction(screenshot("missing_plain.png"), screenshot("found_plain.png")), 0.001);
+    EXPECT_GT(changedFraction(screenshot("missing_panels.png"), screenshot("found_panels.png")), 0.05)
+        << "the warning is not shown in the window";
 }
 
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
