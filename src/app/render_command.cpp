@@ -70,8 +70,8 @@ int runRender(const std::vector<std::string>& rawArguments) {
         std::printf("  %-10s %8.3f ms GPU\n", pass.name.c_str(), pass.milliseconds);
     for (const std::string& pass : stats.skipped()) std::printf("  %-10s  skipped\n", pass.c_str());
     if (stats.bounces > 0)
-        std::printf("  light: %u bounce%s, %s\n", stats.bounces, stats.bounces == 1 ? "" : "s",
-                    stats.bouncesConverged ? "converged" : "not converged yet");
+        std::printf("  light: %u bounce%s over %u occupied voxels, %s\n", stats.bounces, stats.bounces == 1 ? "" : "s",
+                    stats.occupiedVoxels, stats.bouncesConverged ? "converged" : "not converged yet");
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width, image.height,
                 renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());

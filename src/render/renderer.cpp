@@ -57,6 +57,7 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       lights_(scene.lights),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
       meanRadiance_(context, 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
+      occupiedHeader_(context, sizeof(glsl::WorkListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
       volumes_(std::make_unique<VoxelVolumes>(context, settings.resources)),
       injectPass_(context),
       mipsPass_(context),
@@ -188,8 +189,6 @@ FrameStats Renderer::renderFrame() {
     const FramePlan& plan = stats.plan;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
     const bool progressive = bouncesProgressively(settings_);
-    const InjectPass::Slice slice{progressiveSlices(settings_), slicePhase_ % progressiveSlices(settings_)};
-    const bool sweepEnds = !progressive || slice.phase + 1 == slice.count;
     // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
     auto submit = [&](const std::function<void(VkCommandBuffer)>& record) {
         submitAndWait(context_, [&](VkCommandBuffer commands) {
@@ -210,25 +209,40 @@ FrameStats Renderer::renderFrame() {
         timer_.end(commands);
     };
 
-    submit([&](VkCommandBuffer commands) {
-        run(commands, Pass::Shadow,
-            [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer); });
-        run(commands, Pass::Voxelize, [&] { voxelizePass_->record(commands, *sceneGpu_, *volumes_); });
-        // Progressively converging (the viewer), the injection is itself a bounce: the light
-        // sources' light plus what the cones gathered from the last frame's light (a slice of the
-        // voxels gathers anew each frame), so a moved light starts from the old solution instead of
-        // dropping to one bounce. Otherwise every frame that re-lights starts from the light
-        // sources alone: the same inputs, the same image.
-        run(commands, Pass::Inject, [&] {
-            if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, slice);
-            injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                               *shadowPass_, *volumes_, progressive);
+    // The voxelizer's count of occupied voxels sizes the progressive slices: read between submissions.
+    if (plan.runs(Pass::Shadow) || plan.runs(Pass::Voxelize))
+        submit([&](VkCommandBuffer commands) {
+            run(commands, Pass::Shadow,
+                [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer); });
+            run(commands, Pass::Voxelize, [&] {
+                voxelizePass_->record(commands, *sceneGpu_, *volumes_);
+                recordOccupiedCount(commands);
+            });
         });
-        run(commands, Pass::Mips, [&] {
-            mipsPass_.record(commands, *volumes_);
-            if (converging && sweepEnds) recordMeanRadiance(commands);
+    if (plan.runs(Pass::Voxelize))
+        occupiedVoxels_ = static_cast<const glsl::WorkListHeader*>(occupiedHeader_.mapped)->count;
+    const uint32_t slices = progressiveSlices(settings_, occupiedVoxels_);
+    const InjectPass::Slice slice{slices, slicePhase_ % slices};
+    stats.occupiedVoxels = occupiedVoxels_;
+    stats.bounceSlices = progressive ? slices : 1;
+    const bool sweepEnds = !progressive || slice.phase + 1 == slice.count;
+    if (plan.runs(Pass::Inject))
+        submit([&](VkCommandBuffer commands) {
+            // Progressively converging (the viewer), the injection is itself a bounce: the light
+            // sources' light plus what the cones gathered from the last frame's light (a slice of the
+            // voxels gathers anew each frame), so a moved light starts from the old solution instead of
+            // dropping to one bounce. Otherwise every frame that re-lights starts from the light
+            // sources alone: the same inputs, the same image.
+            run(commands, Pass::Inject, [&] {
+                if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, slice);
+                injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
+                                   *shadowPass_, *volumes_, progressive);
+            });
+            run(commands, Pass::Mips, [&] {
+                mipsPass_.record(commands, *volumes_);
+                if (converging && sweepEnds) recordMeanRadiance(commands);
+            });
         });
-    });
     bool converged = true;
     if (plan.runs(Pass::Inject)) {
         stats.bounces = 1;
@@ -278,6 +292,15 @@ FrameStats Renderer::renderFrame() {
     stale_ = afterFrame(stale_, plan, converged);
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
+}
+
+void Renderer::recordOccupiedCount(VkCommandBuffer commands) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy region{0, 0, sizeof(glsl::WorkListHeader)};
+    vkCmdCopyBuffer(commands, volumes_->occupiedDispatch.buffer, occupiedHeader_.buffer, 1, &region);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void Renderer::recordMeanRadiance(VkCommandBuffer commands) {

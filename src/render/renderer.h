@@ -36,6 +36,8 @@ struct FrameStats {
     double cpuMilliseconds = 0.0;  // recording + submission + wait, on the CPU clock
     uint32_t bounces = 0;          // bounce iterations this frame ran (the injection is the first)
     bool bouncesConverged = true;  // the voxels' light changed by less than kBounceTolerance
+    uint32_t occupiedVoxels = 0;   // voxels the last voxelization listed (the light passes' work)
+    uint32_t bounceSlices = 1;     // a progressive bounce gathers for one of these slices a frame
 
     double gpuMilliseconds() const;
     bool ran(const std::string& pass) const;
@@ -85,6 +87,8 @@ private:
     // Copies the radiance volume's mean (its 1×1×1 level) to meanRadiance_, and tells, once the
     // commands ran, whether it moved by less than kBounceTolerance since the last time.
     void recordMeanRadiance(VkCommandBuffer commands);
+    // Copies the occupied list's header to occupiedHeader_: its count sizes the progressive slices.
+    void recordOccupiedCount(VkCommandBuffer commands);
     bool meanRadianceSettled();
 
     GpuContext& context_;
@@ -106,6 +110,8 @@ private:
     Buffer meanRadiance_;  // host-visible RGBA16F texel
     float lastMeanRadiance_ = 0.0f;
     uint32_t slicePhase_ = 0;  // the occupied voxels' slice the next progressive bounce gathers for
+    Buffer occupiedHeader_;    // host-visible copy of the occupied list's header, made after voxelizing
+    uint32_t occupiedVoxels_ = 0;
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;
     std::unique_ptr<ShadowPass> shadowPass_;

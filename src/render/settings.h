@@ -128,7 +128,7 @@ struct ShadingSettings {
     bool progressiveBounces = false;
     // ...and each frame's bounce gathers for every Nth occupied voxel only, in turn, so that a
     // moving light costs a fraction of a bounce per frame; the light sources' own light (the
-    // first bounce) is still re-injected whole every frame. 0: by the grid (progressiveSlices()).
+    // first bounce) is still re-injected whole every frame. 0: by the work (progressiveSlices()).
     uint32_t progressiveSlices = 0;
 
     DebugView debugView = DebugView::None;
@@ -151,12 +151,16 @@ inline bool bouncesProgressively(const RenderSettings& settings) {
     return settings.resources.bounces == kConvergedBounces && settings.shading.progressiveBounces;
 }
 
-// The slices a progressive bounce is spread over: about 12 000 voxels a frame in a room (its
-// walls' voxels grow with the square of the resolution), none at 32³, 8 frames at 128³.
-inline uint32_t progressiveSlices(const RenderSettings& settings) {
+// The cones a progressive bounce traces per frame, at most: about 30 ms on lavapipe (2 cores,
+// 3.7 µs a cone at 64³), well under a millisecond on a discrete GPU.
+inline constexpr uint32_t kProgressiveGatherCones = 8192;
+// The slices a progressive bounce is spread over, for `occupiedVoxels` voxels each gathering
+// through the diffuse cones: one on the `fast` preset's Cornell box (32³, one cone), 19 on
+// `balanced` (64³, six cones).
+inline uint32_t progressiveSlices(const RenderSettings& settings, uint32_t occupiedVoxels) {
     if (settings.shading.progressiveSlices != 0) return settings.shading.progressiveSlices;
-    const uint32_t sixtyFourths = settings.resources.voxelResolution / 64;
-    return std::max(1u, sixtyFourths * sixtyFourths * 2);
+    const uint64_t cones = uint64_t(occupiedVoxels) * std::max(settings.shading.diffuseConeCount, 1u);
+    return uint32_t(std::max<uint64_t>(1, (cones + kProgressiveGatherCones - 1) / kProgressiveGatherCones));
 }
 
 // Whether the frame reads the voxels at all (indirect light, AO, voxel views): if not, no voxel

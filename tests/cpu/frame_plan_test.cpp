@@ -115,6 +115,21 @@ TEST(FramePlan, ProgressiveBouncesInjectOncePerFrameUntilTheLightConverges) {
     EXPECT_EQ(names(planFrame(settled, settings)), (Names{"gbuffer", "shade", "resolve"}));
 }
 
+TEST(FramePlan, ProgressiveBouncesSpreadTheirConesOverSlicesOfABoundedSize) {
+    RenderSettings settings;
+    settings.shading.diffuseConeCount = 6;
+    EXPECT_EQ(progressiveSlices(settings, 0), 1u);
+    EXPECT_EQ(progressiveSlices(settings, kProgressiveGatherCones / 6), 1u);
+    EXPECT_EQ(progressiveSlices(settings, kProgressiveGatherCones / 6 + 1), 2u);
+    // Every slice traces at most the budget's cones, and the slices cover every voxel.
+    for (uint32_t voxels : {1000u, 25000u, 100000u, 16777216u}) {
+        const uint64_t slices = progressiveSlices(settings, voxels);
+        EXPECT_LE((voxels + slices - 1) / slices * 6, uint64_t(kProgressiveGatherCones) + 6) << voxels;
+    }
+    settings.shading.progressiveSlices = 3;
+    EXPECT_EQ(progressiveSlices(settings, 25000), 3u) << "a setting overrides the budget";
+}
+
 TEST(FramePlan, AfterAFullFrameNothingIsStale) {
     const FramePlan plan = planFrame(StaleInputs{}, RenderSettings{});
     EXPECT_EQ(afterFrame(StaleInputs{}, plan, true),
