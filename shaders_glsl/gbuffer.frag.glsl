@@ -1,5 +1,6 @@
 #version 460
-// G-buffer: world position + material index, shading normal + front-face flag, base colour.
+// G-buffer: world position + material index, shading normal + front-face flag, base colour, and the
+// emissive texture's colour (the shading pass multiplies it with the material's emission).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
@@ -9,7 +10,7 @@ layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial mat
 // (no descriptor-indexing feature needed: lavapipe has none).
 layout(push_constant) uniform Push { uint materialIndex; };
 layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
-layout(set = 1, binding = 0) uniform sampler2D baseColorTextures[TEXTURE_COUNT];
+layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];  // base colour and emissive, sRGB
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -18,12 +19,15 @@ layout(location = 2) in vec2 uv;
 layout(location = 0) out vec4 outPosition;   // xyz, w = material index + 1 (0 = nothing)
 layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = 1 on the front face
 layout(location = 2) out vec4 outBaseColor;  // linear rgb, a
+layout(location = 3) out vec4 outEmissive;   // linear rgb of the emissive texture, 1 without one
 
 void main() {
     GpuMaterial material = materials[materialIndex];
     vec4 baseColor = material.baseColorFactor;
     if (material.baseColorTexture >= 0)
-        baseColor *= texture(baseColorTextures[material.baseColorTexture], uv);
+        baseColor *= texture(colorTextures[material.baseColorTexture], uv);
+    vec3 emissive = vec3(1.0f);
+    if (material.emissiveTexture >= 0) emissive = texture(colorTextures[material.emissiveTexture], uv).rgb;
 
     // Surfaces reflect on both sides (as in the reference path tracer); emission leaves the front only.
     vec3 normal = worldNormal;
@@ -41,4 +45,5 @@ void main() {
     outPosition = vec4(worldPosition, float(materialIndex + 1u));
     outNormal = vec4(normal, frontFace ? 1.0f : 0.0f);
     outBaseColor = baseColor;
+    outEmissive = vec4(emissive, 1.0f);
 }

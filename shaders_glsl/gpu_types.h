@@ -15,11 +15,16 @@ struct GpuVertex {
 
 struct GpuMaterial {
     vec4 baseColorFactor;  // linear rgb, alpha
-    vec4 emission;         // rgb radiance from the front face
+    vec4 emission;         // rgb radiance from the front face, before the emissive texture
+    vec4 voxelEmission;    // rgb emission × the emissive texture's mean (voxelEmission() in material_textures.h)
     float metallic;
     float roughness;
     float specularWeight;
     int baseColorTexture;  // -1 = none
+    int emissiveTexture;   // -1 = none
+    int unused0;
+    int unused1;
+    int unused2;
 };
 
 struct GpuLight {

@@ -21,6 +21,7 @@ layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
 // The shadow maps' depths, for the PCF kernel's blocker search (shadows.glsl).
 layout(set = 0, binding = 14) uniform sampler2DArray sunShadowDepths;
 layout(set = 0, binding = 15) uniform sampler2DArray localShadowDepths;
+layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive texture's colour
 #define SHADOW_BLOCKER_SEARCH
 
 #include "cone_tracing.glsl"
@@ -95,7 +96,8 @@ void main() {
 
     uint flags = frame.componentFlags;
     vec3 radiance = directLight(surface, flags);
-    if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f) radiance += material.emission.rgb;
+    if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f)
+        radiance += material.emission.rgb * texelFetch(gEmissive, pixel, 0).rgb;
     radiance += indirectLight(surface, pixel, flags);
     outRadiance = vec4(radiance, 1.0f);
 }

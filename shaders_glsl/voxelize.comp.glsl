@@ -4,6 +4,7 @@
 // triangle touches gets the triangle's attributes added to the integer accumulation buffers.
 // Base colour is the material's baseColorFactor only: textures are ignored for now (a voxel covers
 // many texels, and sampling them here needs the texture array and the UVs; a later refinement).
+// Emission is the material's voxelEmission: its emission times its emissive texture's mean colour.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 #include "voxelize.h"
@@ -49,14 +50,14 @@ void main() {
     GpuMaterial material = materials[triangleMaterials[triangle]];
     vec3 albedo = clamp(material.baseColorFactor.rgb, 0.0f, 1.0f);
     vec3 normal = unitNormal(a, b, c);
-    vec3 emission = clamp(material.emission.rgb * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
+    vec3 emission = clamp(material.voxelEmission.rgb * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
     uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);
     atomicAdd(accumulation[ACCUM_COUNT].values[index], 1u);
     for (uint i = 0u; i < 3u; ++i) {
         atomicAdd(accumulation[ACCUM_ALBEDO + i].values[index], toFixed(albedo[i], ALBEDO_FIXED_SCALE));
         atomicAdd(accumulation[ACCUM_NORMAL + i].values[index], toFixed(normal[i], NORMAL_FIXED_SCALE));
     }
-    if (max(material.emission.r, max(material.emission.g, material.emission.b)) > 0.0f) {
+    if (max(material.voxelEmission.r, max(material.voxelEmission.g, material.voxelEmission.b)) > 0.0f) {
         atomicAdd(accumulation[ACCUM_EMITTERS].values[index], 1u);
         for (uint i = 0u; i < 3u; ++i)
             atomicAdd(accumulation[ACCUM_EMISSION + i].values[index], toFixed(emission[i], 1.0f));

@@ -4,6 +4,8 @@
 
 namespace vct {
 
+constexpr uint32_t kColorTargets = 4;  // position, normal, base colour, emissive
+
 static GpuImage makeTarget(GpuContext& context, VkFormat format, uint32_t width, uint32_t height, const char* name) {
     ImageDesc desc;
     desc.format = format;
@@ -20,12 +22,13 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     position = makeTarget(context, VK_FORMAT_R32G32B32A32_SFLOAT, width, height, "G-buffer position");
     normal = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer normal");
     baseColor = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer base colour");
+    emissive = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer emissive");
     depth = makeTarget(context, VK_FORMAT_D32_SFLOAT, width, height, "G-buffer depth");
 
     GraphicsPipelineDesc desc;
     desc.vertexShader = "gbuffer.vert";
     desc.fragmentShader = "gbuffer.frag";
-    desc.colorFormats = {position.desc.format, normal.desc.format, baseColor.desc.format};
+    desc.colorFormats = {position.desc.format, normal.desc.format, baseColor.desc.format, emissive.desc.format};
     desc.depthFormat = VK_FORMAT_D32_SFLOAT;
     desc.depthTest = true;
     // The texture array's size is a specialization constant, so the pipeline is built per scene.
@@ -35,7 +38,8 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
 
 void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants) {
     const VkPipelineStageFlags2 colorStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
-    for (GpuImage* target : {&position, &normal, &baseColor})
+    GpuImage* targets[kColorTargets] = {&position, &normal, &baseColor, &emissive};
+    for (GpuImage* target : targets)
         imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_2_NONE, colorStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
@@ -44,9 +48,8 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
                  VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
 
-    VkRenderingAttachmentInfo colors[3];
-    GpuImage* targets[3] = {&position, &normal, &baseColor};
-    for (int i = 0; i < 3; ++i) {
+    VkRenderingAttachmentInfo colors[kColorTargets];
+    for (uint32_t i = 0; i < kColorTargets; ++i) {
         colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         colors[i].imageView = targets[i]->view;
         colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -63,7 +66,7 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, {width, height}};
     rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 3;
+    rendering.colorAttachmentCount = kColorTargets;
     rendering.pColorAttachments = colors;
     rendering.pDepthAttachment = &depthAttachment;
     vkCmdBeginRendering(commands, &rendering);
@@ -88,7 +91,7 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
     }
     vkCmdEndRendering(commands);
 
-    for (GpuImage* target : {&position, &normal, &baseColor})
+    for (GpuImage* target : targets)
         imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, colorStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -17,6 +17,7 @@ struct GBufferPass {
     GpuImage position;   // RGBA32F: world position, material index + 1 (0 = background)
     GpuImage normal;     // RGBA16F: normal facing the camera, 1 on front faces
     GpuImage baseColor;  // RGBA16F: linear base colour
+    GpuImage emissive;   // RGBA16F: the emissive texture's linear colour (1 without one), times the emission
     GpuImage depth;      // D32F
     Pipeline pipeline;
 

@@ -366,8 +366,9 @@ namespace vct {
 uint64_t Renderer::deviceMemoryBytes() const {
     uint64_t bytes = volumes_->allocatedBytes();
     for (const GpuImage* image : std::initializer_list<const GpuImage*>{
-             &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->depth,
-             &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps})
+             &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->emissive,
+             &gbufferPass_->depth, &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps,
+             &shadowPass_->localMaps})
         bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{

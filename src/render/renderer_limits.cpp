@@ -15,9 +15,10 @@ namespace vct {
 namespace {
 
 // Bytes per texel of the formats the passes create (see each pass's constructor).
-constexpr uint64_t kShadowTexel = 4;                    // D32
-constexpr uint64_t kSampleBytes = 16 + 8 + 8 + 4 + 16;  // G-buffer position, normal, base colour, depth; shade
-constexpr uint64_t kResolvedPixel = 16;                 // RGBA32F
+constexpr uint64_t kShadowTexel = 4;  // D32
+constexpr uint64_t kSampleBytes =
+    16 + 8 + 8 + 8 + 4 + 16;             // G-buffer position, normal, base colour, emissive, depth; shade
+constexpr uint64_t kResolvedPixel = 16;  // RGBA32F
 
 // The tightest of the limits a 2D render target's side must respect, with its Vulkan name.
 struct SideLimit {

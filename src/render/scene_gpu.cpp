@@ -11,6 +11,7 @@
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "gpu_types.h"
+#include "scene/material_textures.h"
 #include "scene/scene_limits.h"
 
 namespace vct {
@@ -28,10 +29,10 @@ Buffer uploadArray(GpuContext& context, const std::vector<T>& values, VkBufferUs
 
 GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, const uint8_t* rgba8) {
     ImageDesc desc;
-    desc.format = VK_FORMAT_R8G8B8A8_SRGB;  // glTF base colour textures are sRGB-encoded
+    desc.format = VK_FORMAT_R8G8B8A8_SRGB;  // glTF base colour and emissive textures are sRGB-encoded
     desc.extent = {width, height, 1};
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    desc.debugName = "base colour texture";
+    desc.debugName = "colour texture";
     GpuImage image(context, desc);
     const VkDeviceSize size = VkDeviceSize(width) * height * 4;
     Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
@@ -138,10 +139,12 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         glsl::GpuMaterial gpu{};
         gpu.baseColorFactor = material.baseColorFactor;
         gpu.emission = glm::vec4(material.emission, 0.0f);
+        gpu.voxelEmission = glm::vec4(voxelEmission(scene, material), 0.0f);
         gpu.metallic = material.metallic;
         gpu.roughness = material.roughness;
         gpu.specularWeight = material.specularWeight;
         gpu.baseColorTexture = material.baseColorTexture;
+        gpu.emissiveTexture = material.emissiveTexture;
         gpuMaterials.push_back(gpu);
     }
     materials = uploadArray(context, gpuMaterials, storage);

@@ -38,7 +38,8 @@ struct SceneGpu {
     };
     std::vector<MaterialRange> materialRanges;
 
-    // Base-colour textures (at least one: a white fallback) in descriptor set 1 of the G-buffer pass.
+    // Colour textures, base colour and emissive (at least one: a white fallback), in descriptor set 1
+    // of the G-buffer pass.
     std::vector<GpuImage> textures;
     Sampler textureSampler;
     VkDescriptorSetLayout textureSetLayout = VK_NULL_HANDLE;

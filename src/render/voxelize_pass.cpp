@@ -8,6 +8,7 @@
 #include "gpu/commands.h"
 #include "render/renderer_limits.h"
 #include "render/voxelize_reference.h"
+#include "scene/material_textures.h"
 
 namespace vct {
 namespace {
@@ -175,9 +176,11 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     const std::vector<glm::uvec2> items = buildVoxelizeWorkItems(scene, gpuTriangleOrder(scene, sceneGpu), grid,
                                                                  voxelizeWorkItemLimit(context.memoryProperties));
 
-    float largestEmission = 0.0f;
-    for (const Material& material : scene.materials)
-        largestEmission = std::max({largestEmission, material.emission.x, material.emission.y, material.emission.z});
+    float largestEmission = 0.0f;  // of what the voxels receive (GpuMaterial::voxelEmission)
+    for (const Material& material : scene.materials) {
+        const glm::vec3 emission = voxelEmission(scene, material);
+        largestEmission = std::max({largestEmission, emission.x, emission.y, emission.z});
+    }
     params.grid = grid;
     params.grid.resolution.z = uint32_t(scene.triangleCount());
     params.grid.resolution.w = uint32_t(items.size());

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/material_textures.h"
+
 namespace vct {
 
 glm::dvec3 toGridCoordinates(const glsl::VoxelGridParams& grid, const glm::vec3& world) {
@@ -86,7 +88,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
         const Material& material = scene.materials[scene.triangleMaterials[t]];
         const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
         const glm::dvec3 albedo = glm::clamp(glm::dvec3(glm::vec3(material.baseColorFactor)), 0.0, 1.0);
-        const glm::dvec3 emission = glm::max(glm::dvec3(material.emission), 0.0);
+        const glm::dvec3 emission = glm::max(glm::dvec3(voxelEmission(scene, material)), 0.0);
         // One voxel of slack so voxels just outside the range also get their decision margin.
         const VoxelRange range = triangleVoxelRange(triangle, n, 1.0);
         for (int z = range.first.z; z <= range.last.z; ++z)

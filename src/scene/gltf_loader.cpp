@@ -1,7 +1,7 @@
 // glTF 2.0 (.gltf/.glb) → vct::Scene, in four steps that each finish before the next begins:
 //   1. read the scene file and vet every external URI against the file policy (file_policy.h);
 //   2. parse with tinygltf, whose file-system callbacks can read only the vetted files and whose
-//      image callback decodes base colour images with stb_image, turning failures into notes;
+//      image callback decodes base colour and emissive images with stb_image, turning failures into notes;
 //   3. validate the whole model (gltf_validate.h);
 //   4. convert: flatten the node hierarchy of the default scene to world space.
 #include <stb/stb_image.h>
@@ -41,7 +41,7 @@ struct ParseContext {
     std::string file;
     // tinygltf asks for "<base dir>/<its own decoding of the URI>"; only these paths exist for it.
     std::map<std::string, fs::path> vettedFiles;
-    std::set<int> baseColorImages;             // images worth decoding
+    std::set<int> colorImages;                 // images worth decoding: base colour and emissive
     std::map<int, std::string> imageProblems;  // why an image has no pixels
     // Each distinct image (file, buffer range or data URI) is decoded once, by its first entry;
     // later entries naming the same bytes point at that one.
@@ -125,7 +125,7 @@ std::string imageIdentity(const tinygltf::Image& image, const unsigned char* byt
     return "bytes " + std::string(reinterpret_cast<const char*>(bytes), size > 0 ? size_t(size) : 0);
 }
 
-// Decodes a base colour image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
+// Decodes a base colour or emissive image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
 // is noted for the loader to report as a warning; only a range the file does not hold stops the load.
 bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
@@ -142,7 +142,7 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
             return false;
         }
     }
-    if (!context.baseColorImages.count(imageIndex)) return true;  // not used as base colour: not decoded
+    if (!context.colorImages.count(imageIndex)) return true;  // not used by the renderer: not decoded
     const auto [first, isNew] = context.firstImageOf.emplace(imageIdentity(*image, bytes, size, context), imageIndex);
     if (!isNew) {
         context.sameImageAs[imageIndex] = first->second;
@@ -237,17 +237,20 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     vet("buffers", true);
     vet("images", false);
 
-    // Only base colour images are decoded; the others are not used by the renderer.
+    // Only base colour and emissive images are decoded; the others are not used by the renderer.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
     if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
         return;
-    for (const nlohmann::json& material : *materials) {
-        const nlohmann::json* index =
-            member(member(member(&material, "pbrMetallicRoughness"), "baseColorTexture"), "index");
-        if (!index || !index->is_number_unsigned() || index->get<size_t>() >= textures->size()) continue;
+    auto decode = [&](const nlohmann::json* textureInfo) {
+        const nlohmann::json* index = member(textureInfo, "index");
+        if (!index || !index->is_number_unsigned() || index->get<size_t>() >= textures->size()) return;
         const nlohmann::json* source = member(&(*textures)[index->get<size_t>()], "source");
-        if (source && source->is_number_integer()) context.baseColorImages.insert(source->get<int>());
+        if (source && source->is_number_integer()) context.colorImages.insert(source->get<int>());
+    };
+    for (const nlohmann::json& material : *materials) {
+        decode(member(member(&material, "pbrMetallicRoughness"), "baseColorTexture"));
+        decode(member(&material, "emissiveTexture"));
     }
 }
 
@@ -334,16 +337,69 @@ struct Converter {
         scene.warnings.push_back(message);
     }
 
+    // What a model looks like without an extension, for those that change its appearance.
+    static std::string withoutExtension(const std::string& name) {
+        static const std::map<std::string, std::string> effects = {
+            {"KHR_materials_transmission", "transmissive surfaces are drawn opaque"},
+            {"KHR_materials_volume", "volumes are drawn as opaque surfaces"},
+            {"KHR_materials_clearcoat", "the clear coat layer is not drawn"},
+            {"KHR_materials_sheen", "the sheen layer is not drawn"},
+            {"KHR_materials_ior", "every dielectric has the default index of refraction 1.5"},
+            {"KHR_materials_iridescence", "the iridescence is not drawn"},
+            {"KHR_materials_anisotropy", "highlights are drawn isotropic"},
+            {"KHR_texture_transform", "textures are sampled without their offset, rotation and scale"},
+            {"KHR_draco_mesh_compression",
+             "Draco-compressed meshes are drawn only where the file also holds them "
+             "uncompressed"},
+            {"EXT_meshopt_compression", "meshopt-compressed data is read from its uncompressed fallback"},
+        };
+        const auto found = effects.find(name);
+        return found == effects.end() ? "" : ": " + found->second;
+    }
+
+    // One warning per extension the renderer does not honour: those listed in extensionsUsed and
+    // those a material, texture, mesh, node or buffer view names without the list saying so.
     void warnAboutExtensions() {
+        std::vector<std::pair<std::string, std::string>> named;  // extension, where first met
+        for (size_t i = 0; i < model.extensionsUsed.size(); ++i)
+            named.emplace_back(model.extensionsUsed[i], at("extensionsUsed", i));
+        auto collect = [&](const tinygltf::ExtensionMap& extensions, const std::string& path) {
+            for (const auto& [name, value] : extensions) named.emplace_back(name, path + ".extensions." + name);
+        };
+        collect(model.extensions, "");
+        for (size_t i = 0; i < model.materials.size(); ++i) {
+            const tinygltf::Material& material = model.materials[i];
+            const std::string path = at("materials", i);
+            collect(material.extensions, path);
+            collect(material.pbrMetallicRoughness.baseColorTexture.extensions,
+                    path + ".pbrMetallicRoughness.baseColorTexture");
+            collect(material.pbrMetallicRoughness.metallicRoughnessTexture.extensions,
+                    path + ".pbrMetallicRoughness.metallicRoughnessTexture");
+            collect(material.normalTexture.extensions, path + ".normalTexture");
+            collect(material.occlusionTexture.extensions, path + ".occlusionTexture");
+            collect(material.emissiveTexture.extensions, path + ".emissiveTexture");
+        }
+        for (size_t i = 0; i < model.textures.size(); ++i) collect(model.textures[i].extensions, at("textures", i));
+        for (size_t i = 0; i < model.bufferViews.size(); ++i)
+            collect(model.bufferViews[i].extensions, at("bufferViews", i));
+        for (size_t i = 0; i < model.nodes.size(); ++i) collect(model.nodes[i].extensions, at("nodes", i));
+        for (size_t m = 0; m < model.meshes.size(); ++m)
+            for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p)
+                collect(model.meshes[m].primitives[p].extensions, at(at("meshes", m) + ".primitives", p));
+
         const std::vector<std::string>& supported = supportedGltfExtensions();
-        for (size_t i = 0; i < model.extensionsUsed.size(); ++i) {
-            const std::string& name = model.extensionsUsed[i];
-            if (std::find(supported.begin(), supported.end(), name) == supported.end())
-                warn(at("extensionsUsed", i), "extension " + name + " is not supported and is ignored");
+        std::set<std::string> warned;
+        for (const auto& [name, path] : named) {
+            if (std::find(supported.begin(), supported.end(), name) != supported.end()) continue;
+            if (!warned.insert(name).second) continue;
+            warn(path.rfind('.', 0) == 0 ? path.substr(1) : path,
+                 "extension " + name + " is not supported and is ignored" + withoutExtension(name));
         }
     }
 
-    int baseColorTexture(const std::string& materialPath, int textureIndex) {
+    // The Scene texture of a material's colour texture (base colour or emissive), decoded once per
+    // image; -1 if there is none or its image could not be read (`fallback` says what is used instead).
+    int colorTexture(const std::string& materialPath, int textureIndex, const std::string& fallback) {
         if (textureIndex < 0) return -1;
         const int source = model.textures[size_t(textureIndex)].source;
         if (source < 0) return -1;
@@ -359,8 +415,7 @@ struct Converter {
             const auto noted = imageProblems.find(imageIndex);
             const std::string problem =
                 noted != imageProblems.end() ? noted->second : description + " could not be read";
-            warn(at("images", size_t(imageIndex)),
-                 problem + "; " + materialPath + " falls back to its base colour factor");
+            warn(at("images", size_t(imageIndex)), problem + "; " + materialPath + " falls back to its " + fallback);
         } else {
             Texture texture;
             texture.name = image.uri.empty() ? at("images", size_t(imageIndex)) : image.uri;
@@ -372,6 +427,13 @@ struct Converter {
         }
         sceneTextureOfImage[imageIndex] = sceneTexture;
         return sceneTexture;
+    }
+
+    // Only TEXCOORD_0 is read (Vertex holds one set).
+    void warnAboutTexCoord(const std::string& texturePath, int texCoord) {
+        if (texCoord != 0)
+            warn(texturePath + ".texCoord",
+                 "TEXCOORD_" + std::to_string(texCoord) + " is not read; the texture is sampled with TEXCOORD_0");
     }
 
     static double extensionNumber(const tinygltf::ExtensionMap& extensions, const char* extension, const char* key,
@@ -389,11 +451,15 @@ struct Converter {
             material.name = source.name;
             if (pbr.baseColorFactor.size() == 4)
                 material.baseColorFactor = glm::vec4(glm::make_vec4(pbr.baseColorFactor.data()));
-            material.baseColorTexture = baseColorTexture(at("materials", i), pbr.baseColorTexture.index);
-            if (material.baseColorTexture >= 0 && pbr.baseColorTexture.texCoord != 0)
-                warn(at("materials", i) + ".pbrMetallicRoughness.baseColorTexture.texCoord",
-                     "TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
-                         " is not read; the texture is sampled with TEXCOORD_0");
+            material.baseColorTexture =
+                colorTexture(at("materials", i), pbr.baseColorTexture.index, "base colour factor");
+            if (material.baseColorTexture >= 0)
+                warnAboutTexCoord(at("materials", i) + ".pbrMetallicRoughness.baseColorTexture",
+                                  pbr.baseColorTexture.texCoord);
+            material.emissiveTexture =
+                colorTexture(at("materials", i), source.emissiveTexture.index, "emissive factor");
+            if (material.emissiveTexture >= 0)
+                warnAboutTexCoord(at("materials", i) + ".emissiveTexture", source.emissiveTexture.texCoord);
             material.metallic = float(pbr.metallicFactor);
             material.roughness = float(pbr.roughnessFactor);
             material.specularWeight =

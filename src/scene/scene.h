@@ -35,10 +35,11 @@ struct Material {
     // 0 = pure Lambertian (used by the Cornell box, whose reflectances are diffuse).
     float specularWeight = 1.0f;
     glm::vec3 emission{0.0f};  // emissiveFactor × KHR_materials_emissive_strength: radiance
+    int emissiveTexture = -1;  // index into Scene::textures, -1 = none; multiplies `emission`
     bool doubleSided = false;
 };
 
-// An 8-bit RGBA image holding sRGB-encoded base colour (glTF stores base colour textures in sRGB).
+// An 8-bit RGBA image holding sRGB-encoded colour: base colour or emission (glTF stores both in sRGB).
 struct Texture {
     std::string name;  // the URI or a description, for messages
     uint32_t width = 0;

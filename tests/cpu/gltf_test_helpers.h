@@ -217,4 +217,32 @@ inline GltfBuilder triangleScene() {
     return gltf;
 }
 
+// A 2 × 2 quad in the z = 0 plane facing +Z (x, y ∈ [−1, 1]) with u = (x + 1)/2 and v = (1 − y)/2,
+// so a texture's left column lies at x = −1 and its top row at y = 1; material 0, which the test
+// fills in; and a camera at z = 2 looking at it, whose view the quad fills (30° vertical field).
+inline GltfBuilder quadFacingCamera() {
+    GltfBuilder gltf;
+    const int positions = gltf.addVec3({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
+    const int normals = gltf.addVec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    const int uvs = gltf.addVec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+    const int indices = gltf.addIndices({0, 1, 2, 0, 2, 3});
+    const int mesh =
+        gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}}, indices, /*material=*/0);
+    gltf.document["materials"] = json::array({json::object()});
+    gltf.document["cameras"] = json::array(
+        {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5235988}, {"znear", 0.1}, {"aspectRatio", 1.0}}}}});
+    gltf.setScene({gltf.addNode({{"mesh", mesh}}), gltf.addNode({{"camera", 0}, {"translation", {0, 0, 2}}})});
+    return gltf;
+}
+
+// An RGBA8 PNG `width` × 1 whose left half is black and right half white, as a data: URI.
+inline std::string halfBlackHalfWhitePngUri(uint32_t width) {
+    std::vector<uint16_t> samples;
+    for (uint32_t x = 0; x < width; ++x) {
+        const uint16_t value = x < width / 2 ? 0 : 255;
+        samples.insert(samples.end(), {value, value, value, 255});
+    }
+    return "data:image/png;base64," + base64(encodePng(width, 1, 4, 8, samples));
+}
+
 }  // namespace vct::test

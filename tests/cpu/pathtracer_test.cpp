@@ -317,6 +317,88 @@ TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     }
 }
 
+// A texture `width` × 1, black on its left half and white on its right (sRGB 0 and 255).
+Texture halfBlackTexture(uint32_t width) {
+    Texture texture;
+    texture.width = width;
+    texture.height = 1;
+    for (uint32_t x = 0; x < width; ++x) {
+        const uint8_t value = x < width / 2 ? 0 : 255;
+        texture.rgba8.insert(texture.rgba8.end(), {value, value, value, 255});
+    }
+    return texture;
+}
+
+// A quad with u from 0 to 1 along `right` and v from 0 to 1 along `down`, facing down × right: the
+// side from which the texture reads as an image (right to the right, down downwards).
+void addTexturedQuad(Scene& scene, glm::vec3 corner, glm::vec3 right, glm::vec3 down, uint32_t material) {
+    const glm::vec3 normal = glm::normalize(glm::cross(down, right));
+    const uint32_t first = uint32_t(scene.vertices.size());
+    scene.vertices.push_back({corner, 0.0f, normal, 0.0f});
+    scene.vertices.push_back({corner + right, 1.0f, normal, 0.0f});
+    scene.vertices.push_back({corner + right + down, 1.0f, normal, 1.0f});
+    scene.vertices.push_back({corner + down, 0.0f, normal, 1.0f});
+    for (uint32_t i : {0u, 2u, 1u, 0u, 3u, 2u}) scene.indices.push_back(first + i);
+    scene.triangleMaterials.insert(scene.triangleMaterials.end(), {material, material});
+}
+
+Material texturedEmitter(glm::vec3 emission) {
+    Material material = lambertian(glm::vec3(0.0f), emission);
+    material.emissiveTexture = 0;
+    return material;
+}
+
+TEST(PathTracer, EmissiveTextureScalesTheEmissionTheCameraSees) {
+    // The quad x, y ∈ [−1, 1] facing a camera that sees x, y ∈ [−½, ½]: u = (x + 1)/2 ∈ [¼, ¾], so
+    // the texture's black half shows on the left of the image, its white half on the right.
+    Scene scene;
+    scene.textures.push_back(halfBlackTexture(8));
+    const uint32_t emitter = addMaterial(scene, texturedEmitter(glm::vec3(2.0f, 1.0f, 0.5f)));
+    addTexturedQuad(scene, glm::vec3(-1, 1, 0), glm::vec3(2, 0, 0), glm::vec3(0, -2, 0), emitter);
+    Camera camera;
+    camera.position = glm::vec3(0.0f, 0.0f, 1.0f);
+    camera.yfov = 2.0f * std::atan(0.5f);
+    scene.cameras.push_back(camera);
+    const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 4, Component::Direct, 3));
+    for (uint32_t y = 0; y < 16; ++y) {
+        for (uint32_t x : {0u, 1u, 2u, 3u, 4u}) EXPECT_EQ(result.image.pixel(x, y)[0], 0.0f) << x << "," << y;
+        for (uint32_t x : {11u, 12u, 13u, 14u, 15u}) {
+            EXPECT_NEAR(result.image.pixel(x, y)[0], 2.0f, 1e-5f) << x << "," << y;
+            EXPECT_NEAR(result.image.pixel(x, y)[2], 0.5f, 1e-5f) << x << "," << y;
+        }
+    }
+}
+
+TEST(PathTracer, LightFromAnEmissiveTextureAgreesWithBrdfSamplingAlone) {
+    // A white floor under a quad that glows through a half-black texture: light sampling must
+    // weigh each sampled point by its own texel (the emitter's choice uses the texture's mean).
+    Scene scene;
+    scene.textures.push_back(halfBlackTexture(8));
+    const uint32_t floor = addMaterial(scene, lambertian(glm::vec3(0.8f)));
+    const uint32_t emitter = addMaterial(scene, texturedEmitter(glm::vec3(4.0f)));
+    addQuad(scene, {glm::vec3(-2, 0, -2), glm::vec3(2, 0, -2), glm::vec3(2, 0, 2), glm::vec3(-2, 0, 2)},
+            glm::vec3(0, 1, 0), floor);
+    addTexturedQuad(scene, glm::vec3(-0.5f, 0.5f, 0.5f), glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), emitter);
+    Camera camera;
+    camera.position = glm::vec3(0.0f, 2.5f, 0.0f);  // looking straight down, image right = +x
+    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
+    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);
+    camera.yfov = 1.2f;
+    scene.cameras.push_back(camera);
+    PathTracer tracer = createPathTracer(scene);
+    constexpr uint32_t kSize = 16;
+    const RenderResult mis = render(tracer, smallRender(scene, kSize, 128, Component::Indirect, 41));
+    tracer.sampleEmitters = false;
+    const RenderResult brdfOnly = render(tracer, smallRender(scene, kSize, 128, Component::Indirect, 42));
+    const uint32_t h = kSize / 2;
+    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, h, kSize}, {h, 0, kSize, kSize}}) {
+        const Estimate a = regionLuminance(mis, x0, y0, x1, y1);
+        const Estimate b = regionLuminance(brdfOnly, x0, y0, x1, y1);
+        EXPECT_NEAR(a.mean, b.mean, kSigmas * std::hypot(a.standardError, b.standardError)) << "region " << x0;
+        EXPECT_GT(a.mean, 0.0);
+    }
+}
+
 TEST(PathTracer, RendersWithDifferentSeedsAgreeWithinTheirEstimatedNoise) {
     const Scene scene = makeTestRoom();
     const PathTracer tracer = createPathTracer(scene);

@@ -581,6 +581,26 @@ TEST_F(Voxelize, EmissionIsTheMeanOfTheEmittingTrianglesOnly) {
     expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
 }
 
+TEST_F(Voxelize, AnEmissiveTextureGivesTheFactorTimesItsMeanColour) {
+    // The voxelizer does not sample textures: a surface glowing through a half-black emissive
+    // texture glows evenly with half its emissiveFactor (the same total power, spread out).
+    Scene scene =
+        makeScene({{glm::vec3(5.25f, 5.5f, 5.25f), glm::vec3(5.25f, 5.5f, 5.75f), glm::vec3(5.75f, 5.5f, 5.25f)}}, {0},
+                  {{{1.0f, 1.0f, 1.0f}, {3.0f, 2.0f, 1.0f}}});
+    Texture texture;
+    texture.width = 2;
+    texture.height = 1;
+    texture.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
+    scene.textures.push_back(texture);
+    scene.materials[0].emissiveTexture = 0;
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
+    const size_t voxel = 5 + 32 * (5 + 32 * 5);
+    EXPECT_NEAR(gpu.emission[voxel].r, 1.5f, kEmissionTolerance * 3.0f);
+    EXPECT_NEAR(gpu.emission[voxel].g, 1.0f, kEmissionTolerance * 3.0f);
+    EXPECT_NEAR(gpu.emission[voxel].b, 0.5f, kEmissionTolerance * 3.0f);
+    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
 TEST_F(Voxelize, SixtyFiveThousandTrianglesInOneVoxelDoNotOverflow) {
     // The largest values each sum can receive, 70 000 times over (more than the 65 535 promised).
     const TriangleF triangle = {glm::vec3(5.1f, 5.1f, 5.5f), glm::vec3(5.9f, 5.1f, 5.5f), glm::vec3(5.1f, 5.9f, 5.5f)};

@@ -12,6 +12,7 @@
 #include "bsdf.h"
 #include "error.h"
 #include "lights.h"
+#include "scene/material_textures.h"
 
 namespace vct::pt {
 namespace {
@@ -24,11 +25,6 @@ constexpr uint64_t kPixelOffsetStream = ~uint64_t(0);  // a stream no sample ind
 float luminance(const glm::vec3& c) { return glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
 
 bool isBlack(const glm::vec3& c) { return c.x <= 0.0f && c.y <= 0.0f && c.z <= 0.0f; }
-
-// The sRGB decoding function (IEC 61966-2-1).
-float srgbToLinear(float encoded) {
-    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
 
 LinearTexture decodeTexture(const Texture& texture) {
     LinearTexture linear;
@@ -102,13 +98,27 @@ const Material& materialOf(const Scene& scene, uint32_t triangle) {
     return scene.materials[scene.triangleMaterials[triangle]];
 }
 
+// The radiance a material emits at texture coordinate uv: emission × the emissive texture.
+glm::vec3 emissionAt(const PathTracer& tracer, const Material& material, const glm::vec2& uv) {
+    glm::vec3 emission = material.emission;
+    if (material.emissiveTexture >= 0 && size_t(material.emissiveTexture) < tracer.textures.size())
+        emission *= sampleTexture(tracer.textures[size_t(material.emissiveTexture)], uv.x, uv.y);
+    return emission;
+}
+
 EmitterTable buildEmitterTable(const Scene& scene) {
     EmitterTable table;
     table.areaPdf.assign(scene.triangleCount(), 0.0f);
     std::vector<double> powers;
     double total = 0.0;
+    // With an emissive texture, its mean stands in for the texels a triangle covers: the choice
+    // stays unbiased (a texture whose mean is 0 is black everywhere), only less well matched.
+    std::vector<float> materialLuminance;
+    for (const Material& material : scene.materials)
+        materialLuminance.push_back(luminance(voxelEmission(scene, material)));
     for (uint32_t triangle = 0; triangle < scene.triangleCount(); ++triangle) {
-        const double power = double(triangleArea(scene, triangle)) * luminance(materialOf(scene, triangle).emission);
+        const double power =
+            double(triangleArea(scene, triangle)) * materialLuminance[scene.triangleMaterials[triangle]];
         if (!(power > 0.0) || !std::isfinite(power)) continue;
         table.triangles.push_back(triangle);
         powers.push_back(power);
@@ -160,7 +170,7 @@ SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::v
     s.shadingNormal = frontFace ? point.shadingNormal : -point.shadingNormal;
     s.geometricNormal =
         glm::dot(point.geometricNormal, s.toViewer) >= 0.0f ? point.geometricNormal : -point.geometricNormal;
-    s.emission = frontFace ? material.emission : glm::vec3(0.0f);
+    s.emission = frontFace ? emissionAt(tracer, material, point.uv) : glm::vec3(0.0f);
     glm::vec3 baseColor = glm::vec3(material.baseColorFactor);
     if (material.baseColorTexture >= 0 && size_t(material.baseColorTexture) < tracer.textures.size()) {
         baseColor *= sampleTexture(tracer.textures[material.baseColorTexture], point.uv.x, point.uv.y);
@@ -252,7 +262,7 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
 
     const float lightPdf = emitters.areaPdf[triangle] * distanceSquared / cosLight;
     const float weight = powerHeuristic(lightPdf, bsdfPdf(s.material, s.shadingNormal, s.toViewer, L));
-    return reflected * materialOf(*tracer.scene, triangle).emission * (weight / lightPdf);
+    return reflected * emissionAt(tracer, materialOf(*tracer.scene, triangle), light.uv) * (weight / lightPdf);
 }
 
 // Where in its pixel sample number `sample` looks: Roberts' R2 sequence (2018, "The Unreasonable

@@ -5,8 +5,8 @@
 // - Every surface reflects on both sides: the shading normal is flipped towards the viewer.
 //   Reflection must also stay on the viewer's side of the geometric normal (no light through
 //   a surface when the shading normal bends away from it).
-// - Emission (Material::emission, radiance) leaves only the front face: the side the
-//   interpolated vertex normal points to.
+// - Emission (Material::emission × the sRGB-decoded emissive texture, radiance) leaves only the
+//   front face: the side the interpolated vertex normal points to.
 // - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Alpha is
 //   ignored (all surfaces are opaque). There is no environment light.
 // - Punctual lights (KHR_lights_punctual, no photometric factor) are delta lights, reached only

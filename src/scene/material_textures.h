@@ -1,0 +1,21 @@
+// What the material textures amount to where a pass cannot sample them per texel.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace vct {
+
+// The sRGB decoding function (IEC 61966-2-1).
+float srgbToLinear(float encoded);
+
+// The mean of the texture's sRGB-decoded RGB over all its texels; white for an empty texture.
+glm::vec3 meanLinearColor(const Texture& texture);
+
+// The radiance the voxelizer gives the material's surfaces: emission × the mean of its emissive
+// texture. An approximation: the voxels of a surface whose texture glows in a few places glow
+// evenly and faintly, with the same total power (for a texture mapped once over the surface).
+glm::vec3 voxelEmission(const Scene& scene, const Material& material);
+
+}  // namespace vct
