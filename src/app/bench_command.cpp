@@ -24,6 +24,7 @@
 #include "render/camera.h"
 #include "render/presets.h"
 #include "render/renderer_limits.h"
+#include "scene/default_light.h"
 #include "scene/load.h"
 
 namespace vct {
@@ -136,6 +137,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
         LoadOptions loadOptions;
         loadOptions.bufferLimits = sceneBufferLimits(context);
         Scene scene = loadScene(scenes[i], loadOptions);
+        addDefaultSunIfUnlit(scene);
         progress.hideWhile([&] {
             for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
         });

@@ -6,6 +6,7 @@
 
 #include "error.h"
 #include "render/camera.h"
+#include "scene/default_light.h"
 #include "scene/load.h"
 
 namespace vct {
@@ -46,7 +47,10 @@ Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits
     options.strict = arguments.has("strict");
     options.allowedRoot = arguments.text("allowed-root", "");
     Scene scene = loadScene(arguments.text("scene", "cornell"), options);
-    applySceneOverrides(sceneOverridesFromArguments(arguments), scene);
+    const SceneOverrides overrides = sceneOverridesFromArguments(arguments);
+    // --light-dir's sun is light enough; --light-intensity alone sets the default sun's.
+    if (!overrides.lightDirection) addDefaultSunIfUnlit(scene);
+    applySceneOverrides(overrides, scene);
     return scene;
 }
 

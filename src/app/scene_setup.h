@@ -30,8 +30,9 @@ void checkSceneArguments(const Arguments& arguments);
 // That `scene` is a built-in scene's name or a file that exists; `option` names where it came from.
 void checkSceneName(const std::string& scene, const std::string& option);
 
-// --scene with --strict and --allowed-root, then the overrides; a file naming more geometry than
-// `limits` allow is refused before it is read. The scene's warnings are for the caller to show.
+// --scene with --strict and --allowed-root, the default sun if the scene has no light (and no
+// --light-dir), then the overrides; a file naming more geometry than `limits` allow is refused
+// before it is read. The scene's warnings (the default sun's among them) are for the caller to show.
 Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits& limits = {});
 // "warning: ..." on stderr, one line each.
 void printSceneWarnings(const Scene& scene);

@@ -20,6 +20,7 @@
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "render/renderer_limits.h"
+#include "scene/default_light.h"
 #include "scene/load.h"
 #include "view/controls.h"
 #include "view/present_pass.h"
@@ -35,8 +36,9 @@ bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
 }
 
-// Scenes without a sun get one, as `--light-dir` does: shining from behind the camera and above,
-// so it reaches into open boxes like the Cornell box.
+// Scenes with lights but no sun get one to steer, as `--light-dir` does: shining from behind the
+// camera and above, so it reaches into open boxes like the Cornell box. (Scenes without any light
+// already have the default sun, default_light.h, as in `vct render`.)
 size_t ensureSun(Scene& scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (scene.lights[i].type == LightType::Directional) return i;
@@ -251,6 +253,7 @@ bool Viewer::loadScene(const std::string& name) {
         return false;
     }
     if (loaded.cameras.empty()) loaded.cameras.push_back(defaultCamera(loaded.bounds()));
+    addDefaultSunIfUnlit(loaded);  // as `vct render` would light it
     Scene previous = std::move(scene_);
     scene_ = std::move(loaded);
     const size_t previousSun = sunIndex_;

@@ -271,6 +271,27 @@ case "$case_name" in
     done
     cmp -s "$work/sun1.pfm" "$work/sun2.pfm" && fail "--light-intensity was ignored"
     echo "ok: --light-intensity set sun-room's sun" ;;
+  unlit-gltf-gets-the-default-sun)
+    # A triangle with no light and no emission: render adds the default sun and says so, in one
+    # line naming its direction and illuminance; --light-intensity sets that sun (0: black).
+    printf '%s' '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
+      "nodes":[{"mesh":0},{"camera":0,"translation":[0,0,3]}],
+      "cameras":[{"type":"perspective","perspective":{"yfov":0.8,"znear":0.1}}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,0],"max":[1,1,0]}],
+      "bufferViews":[{"buffer":0,"byteLength":36}],
+      "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]}' \
+      >"$work/unlit.gltf"
+    for intensity in default 0; do
+      extra=()
+      [ "$intensity" = default ] || extra=(--light-intensity "$intensity")
+      "$vct" render "${small[@]}" --scene "$work/unlit.gltf" --mode direct "${extra[@]}" \
+        --out "$work/unlit-$intensity.pfm" >"$work/stdout" 2>"$work/stderr" || fail "the render failed"
+    done
+    notes=$(grep -c "default sun is added: travelling along (0.25, -0.83, -0.50), 3 lux" "$work/stderr")
+    [ "$notes" -eq 1 ] || fail "$notes lines name the default sun, expected 1"
+    cmp -s "$work/unlit-default.pfm" "$work/unlit-0.pfm" && fail "the default sun lit nothing"
+    echo "ok: the unlit file got the named default sun" ;;
   texture-bomb)
     # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded): refused
     # from the headers, before anything is decoded, when they exceed the budget for decoded images.

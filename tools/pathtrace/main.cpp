@@ -10,6 +10,7 @@
 #include "io/image_io.h"
 #include "io/json_text.h"
 #include "path_tracer.h"
+#include "scene/default_light.h"
 #include "scene/load.h"
 
 namespace {
@@ -146,7 +147,8 @@ const char* modeName(pt::Component component) {
 
 int run(int argc, char** argv) {
     Options options = parseOptions(argc, argv);
-    const vct::Scene scene = vct::loadScene(options.scene);
+    vct::Scene scene = vct::loadScene(options.scene);
+    vct::addDefaultSunIfUnlit(scene);  // the light `vct render` gives a scene without any
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     options.settings.camera = chooseCamera(scene, options);
     pt::PathTracer tracer = pt::createPathTracer(scene);

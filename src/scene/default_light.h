@@ -1,0 +1,25 @@
+// The light a scene without any gets, the same in `vct render`, `vct view`, `vct bench` and the
+// path tracer, so that a glTF file without lights (most sample models) is not rendered black.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace vct {
+
+// A sun from above, in front (+Z, where glTF models face) and a little to the left, fixed in world
+// space so that every command and every camera sees the scene under the same light.
+inline constexpr glm::vec3 kDefaultSunTravel{0.3f, -1.0f, -0.6f};  // normalised where used
+inline constexpr float kDefaultSunIlluminance = 3.0f;              // lux, as --light-dir's sun
+inline constexpr const char* kDefaultSunName = "default sun";
+
+// True if the scene has a light or a triangle that emits (its emission times its emissive
+// texture's mean is not black).
+bool sceneHasLight(const Scene& scene);
+
+// Adds the default sun to a scene without light, and a warning naming it (direction and
+// illuminance) to scene.warnings, which every command prints. Returns whether it added one.
+bool addDefaultSunIfUnlit(Scene& scene);
+
+}  // namespace vct

@@ -1,0 +1,184 @@
+// glTF materials beyond the base colour: emissive textures, the light a scene without any gets, and
+// the warnings for extensions that change how a model looks.
+#include <gtest/gtest.h>
+
+#include "gltf_test_helpers.h"
+#include "scene/default_light.h"
+#include "scene/load.h"
+#include "scene/material_textures.h"
+
+namespace vct {
+namespace {
+
+using test::GltfBuilder;
+using test::json;
+using test::TempFolder;
+
+Scene loadBuilt(GltfBuilder& gltf) {
+    TempFolder folder;
+    return loadGltf(gltf.writeGltf(folder, "scene").string());
+}
+
+// The quad glowing with emissiveFactor (2, 1, 0.5) through a texture black on its left half.
+GltfBuilder emissiveQuad() {
+    GltfBuilder gltf = test::quadFacingCamera();
+    gltf.document["images"] = json::array({{{"uri", test::halfBlackHalfWhitePngUri(8)}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    gltf.document["materials"][0] = {{"emissiveFactor", {2.0, 1.0, 0.5}}, {"emissiveTexture", {{"index", 0}}}};
+    return gltf;
+}
+
+TEST(EmissiveTexture, IsDecodedAsAColourTextureOfTheMaterial) {
+    GltfBuilder gltf = emissiveQuad();
+    const Scene scene = loadBuilt(gltf);
+    ASSERT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.materials[0].emissiveTexture, 0);
+    EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(scene.materials[0].emission, glm::vec3(2.0f, 1.0f, 0.5f));
+    EXPECT_EQ(scene.textures[0].width, 8u);
+    EXPECT_EQ(scene.textures[0].rgba8[0], 0);
+    EXPECT_EQ(scene.textures[0].rgba8[4 * 7], 255);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
+TEST(EmissiveTexture, SharesTheImageWithABaseColourTextureNamingIt) {
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.materials[0].emissiveTexture, 0);
+}
+
+TEST(EmissiveTexture, ASecondTexCoordSetIsNamedInAWarning) {
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["materials"][0]["emissiveTexture"]["texCoord"] = 1;
+    const Scene scene = loadBuilt(gltf);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("materials[0].emissiveTexture.texCoord: TEXCOORD_1 is not read"),
+              std::string::npos)
+        << scene.warnings[0];
+}
+
+TEST(EmissiveTexture, AnImageThatCannotBeReadFallsBackToTheFactorWithAWarning) {
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["images"][0]["uri"] = "missing.png";
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_EQ(scene.materials[0].emissiveTexture, -1);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("falls back to its emissive factor"), std::string::npos) << scene.warnings[0];
+}
+
+TEST(MaterialTextures, VoxelEmissionIsTheEmissionTimesTheTexturesMeanLinearColour) {
+    GltfBuilder gltf = emissiveQuad();
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_EQ(meanLinearColor(scene.textures[0]), glm::vec3(0.5f));
+    EXPECT_EQ(voxelEmission(scene, scene.materials[0]), glm::vec3(1.0f, 0.5f, 0.25f));
+
+    Texture grey;  // sRGB 128 is 0.2158605 in linear terms (IEC 61966-2-1)
+    grey.width = grey.height = 1;
+    grey.rgba8 = {128, 128, 128, 255};
+    EXPECT_NEAR(meanLinearColor(grey).g, 0.2158605f, 1e-6f);
+}
+
+TEST(DefaultLight, SceneWithoutLightGetsOneSunNamedInOneWarning) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    Scene scene = loadBuilt(gltf);
+    ASSERT_TRUE(scene.lights.empty());
+    EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+    ASSERT_EQ(scene.lights.size(), 1u);
+    const Light& sun = scene.lights[0];
+    EXPECT_EQ(sun.type, LightType::Directional);
+    EXPECT_EQ(sun.intensity, kDefaultSunIlluminance);
+    EXPECT_NEAR(glm::length(sun.direction), 1.0f, 1e-6f);
+    EXPECT_LT(sun.direction.y, 0.0f);  // from above
+    EXPECT_LT(sun.direction.z, 0.0f);  // onto the side glTF models face (+Z)
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("default sun is added: travelling along (0.25, -0.83, -0.50), 3 lux"),
+              std::string::npos)
+        << scene.warnings[0];
+    EXPECT_FALSE(addDefaultSunIfUnlit(scene));  // now it has a light
+    EXPECT_EQ(scene.lights.size(), 1u);
+}
+
+TEST(DefaultLight, AnEmissiveSurfaceIsLightEnough) {
+    GltfBuilder gltf = emissiveQuad();
+    Scene scene = loadBuilt(gltf);
+    EXPECT_FALSE(addDefaultSunIfUnlit(scene));
+    EXPECT_TRUE(scene.lights.empty());
+}
+
+TEST(DefaultLight, AnEmissiveFactorThroughABlackTextureIsNoLight) {
+    GltfBuilder gltf = emissiveQuad();
+    std::vector<uint16_t> black = {0, 0, 0, 255};
+    gltf.document["images"][0]["uri"] = "data:image/png;base64," + test::base64(test::encodePng(1, 1, 4, 8, black));
+    Scene scene = loadBuilt(gltf);
+    EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+}
+
+size_t warningsNaming(const Scene& scene, const std::string& text) {
+    size_t count = 0;
+    for (const std::string& warning : scene.warnings) count += warning.find(text) != std::string::npos;
+    return count;
+}
+
+TEST(UnsupportedExtension, ClearcoatOnEveryMaterialGetsOneWarningSayingWhatIsLost) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    const json clearcoat = {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}}};
+    gltf.document["materials"] = json::array({{{"extensions", clearcoat}}, {{"extensions", clearcoat}}});
+    gltf.document["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_materials_clearcoat"};
+    const Scene scene = loadBuilt(gltf);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(warningsNaming(scene,
+                             "extensionsUsed[0]: extension KHR_materials_clearcoat is not supported and is "
+                             "ignored: the clear coat layer is not drawn"),
+              1u)
+        << scene.warnings[0];
+}
+
+TEST(UnsupportedExtension, AnExtensionMissingFromExtensionsUsedIsStillNamed) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    gltf.document["materials"][0] = {
+        {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}},
+        {"pbrMetallicRoughness",
+         {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", json::object()}}}}}}}};
+    gltf.document["images"] = json::array({{{"uri", test::halfBlackHalfWhitePngUri(2)}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_EQ(scene.warnings.size(), 2u);
+    EXPECT_EQ(warningsNaming(scene,
+                             "materials[0].extensions.KHR_materials_transmission: extension "
+                             "KHR_materials_transmission is not supported"),
+              1u);
+    EXPECT_EQ(warningsNaming(scene,
+                             "KHR_texture_transform is not supported and is ignored: textures are sampled "
+                             "without their offset"),
+              1u);
+}
+
+TEST(UnsupportedExtension, SupportedExtensionsGetNoWarning) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    gltf.document["materials"][0] = {
+        {"emissiveFactor", {1.0, 1.0, 1.0}},
+        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};
+    gltf.document["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(UnsupportedExtension, ARequiredOneStaysAnErrorNamingIt) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    gltf.document["extensionsUsed"] = {"KHR_materials_volume"};
+    gltf.document["extensionsRequired"] = {"KHR_materials_volume"};
+    try {
+        loadBuilt(gltf);
+        FAIL() << "a required extension that is not supported was accepted";
+    } catch (const std::exception& error) {
+        EXPECT_NE(std::string(error.what()).find("requires extension KHR_materials_volume, which is not supported"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace vct

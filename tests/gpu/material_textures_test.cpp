@@ -1,0 +1,77 @@
+// What the camera sees of glTF materials beyond the base colour, and of a file without lights.
+#include <cmath>
+
+#include "../cpu/gltf_test_helpers.h"
+#include "gpu_test.h"
+#include "render/renderer.h"
+#include "scene/default_light.h"
+#include "scene/load.h"
+
+namespace vct::test {
+namespace {
+
+constexpr uint32_t kSize = 32;
+constexpr float kRelativeTolerance = 0.01f;
+
+RenderSettings directSettings() {
+    RenderSettings settings;
+    settings.image.width = kSize;
+    settings.image.height = kSize;
+    settings.image.supersample = 1;
+    settings.resources.voxelResolution = 32;
+    settings.resources.sunShadowMapSize = 256;
+    settings.resources.localShadowMapSize = 128;
+    settings.shading.mode = RenderMode::Direct;
+    return settings;
+}
+
+Scene loadBuilt(GltfBuilder& gltf) {
+    TempFolder folder;
+    return loadGltf(gltf.writeGltf(folder, "scene").string());
+}
+
+class MaterialTextures : public GpuTest {};
+
+TEST_F(MaterialTextures, EmissiveTextureHalfBlackLightsHalfTheQuad) {
+    // quadFacingCamera: the camera sees u ∈ [0.23, 0.77]; the 8-texel texture is black up to
+    // u = 0.5 and bilinear filtering blends only within half a texel (1/16) of that edge, so
+    // columns 0–10 see black texels only and columns 21–31 white ones only.
+    GltfBuilder gltf = quadFacingCamera();
+    gltf.document["images"] = json::array({{{"uri", halfBlackHalfWhitePngUri(8)}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    gltf.document["materials"][0] = {{"emissiveFactor", {2.0, 1.0, 0.5}}, {"emissiveTexture", {{"index", 0}}}};
+    const Scene scene = loadBuilt(gltf);
+    Renderer renderer(gpu(), scene, directSettings());
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x <= 10; ++x) EXPECT_LT(image.pixel(x, y)[0], 1e-3f) << x << "," << y;
+        for (uint32_t x = 21; x < kSize; ++x) {
+            EXPECT_NEAR(image.pixel(x, y)[0], 2.0f, kRelativeTolerance * 2.0f) << x << "," << y;
+            EXPECT_NEAR(image.pixel(x, y)[1], 1.0f, kRelativeTolerance * 1.0f) << x << "," << y;
+            EXPECT_NEAR(image.pixel(x, y)[2], 0.5f, kRelativeTolerance * 0.5f) << x << "," << y;
+        }
+    }
+}
+
+TEST_F(MaterialTextures, FileWithoutLightsIsLitByTheDefaultSun) {
+    // A grey Lambertian quad and nothing else: the default sun gives it L = E·cosθ·albedo/π.
+    GltfBuilder gltf = quadFacingCamera();
+    gltf.document["materials"][0] = {
+        {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}},
+        {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}};
+    gltf.document["extensionsUsed"] = {"KHR_materials_specular"};
+    Scene scene = loadBuilt(gltf);
+    ASSERT_TRUE(addDefaultSunIfUnlit(scene));
+    Renderer renderer(gpu(), scene, directSettings());
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    const float cosine = -glm::normalize(kDefaultSunTravel).z;
+    const float expected = kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
+    for (uint32_t y = 0; y < kSize; ++y)
+        for (uint32_t x = 0; x < kSize; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], expected, kRelativeTolerance * expected) << x << "," << y;
+}
+
+}  // namespace
+}  // namespace vct::test
