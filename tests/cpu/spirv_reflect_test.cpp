@@ -244,6 +244,7 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     expected.push_back(binding(0, 13, kCombined, kFragment));     // the reduced diffuse cones
     expected.push_back(binding(0, 14, kCombined, kFragment));     // the sun shadow maps' depths
     expected.push_back(binding(0, 15, kCombined, kFragment));     // the local shadow maps' depths
+    expected.push_back(binding(0, 16, kCombined, kFragment));     // the G-buffer's emissive texture colour
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }
