@@ -158,6 +158,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
             std::printf("  %-16s %-34s %8.1f ms static %8.1f ms light (%u bounces, %.0f ms each)", m.scene.c_str(),
                         m.setting.label.c_str(), m.staticFrame.gpuMilliseconds, m.lightChangeFrame.cpuMilliseconds,
                         m.bounces, m.bounceMilliseconds);
+            if (m.lightMovingFrame)
+                std::printf(" %7.1f ms moving light (1/%u bounce)", m.lightMovingFrame->cpuMilliseconds,
+                            m.bounceSlices);
             if (m.errors)
                 std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse,
                             m.errors->direct.relMse, m.errors->indirect.relMse);

@@ -157,6 +157,23 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
         shading.mode = RenderMode::Full;
         renderer->setShading(shading);
 
+        // The viewer's frame while a light moves: the light sources' light re-injected and one
+        // progressive bounce, gathered for a slice of the voxels (last: it leaves the light
+        // unconverged, and the next setting starts with a light change).
+        if (setting.settings.resources.bounces == kConvergedBounces) {
+            ShadingSettings moving = shading;
+            moving.progressiveBounces = true;
+            renderer->setShading(moving);
+            frames.clear();
+            for (uint32_t i = 0; i < options.frames; ++i) {
+                renderer->setLights(renderer->lights());
+                frames.push_back(renderer->renderFrame());
+            }
+            m.lightMovingFrame = medianTiming(frames);
+            m.bounceSlices = frames.back().bounceSlices;
+            renderer->setShading(shading);
+        }
+
         m.imagesFinite = finite(m.fullImage) && finite(direct) && finite(indirect);
         if (references) {
             m.errors =

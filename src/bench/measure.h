@@ -60,6 +60,10 @@ struct Measurement {
     BenchSetting setting;
     FrameTiming staticFrame;       // nothing changed
     FrameTiming lightChangeFrame;  // a light changed: shadow maps, injection, mips and shading
+    // The viewer's frame while a light moves (converged bounces only): one progressive bounce
+    // gathered for one of bounceSlices slices of the voxels.
+    std::optional<FrameTiming> lightMovingFrame;
+    uint32_t bounceSlices = 1;
     double voxelizeMilliseconds = 0.0;
     uint32_t bounces = 0;             // bounces a light change ran (from the light sources' light on)
     bool bouncesConverged = true;     // they reached kBounceTolerance

@@ -181,6 +181,9 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
              << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
              << "},\n     \"static\": " << jsonTiming(m.staticFrame)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
+             << (m.lightMovingFrame ? ",\n     \"light_moving\": " + jsonTiming(*m.lightMovingFrame) +
+                                          ", \"bounce_slices\": " + std::to_string(m.bounceSlices)
+                                    : std::string())
              << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds) << ", \"bounces\": " << m.bounces
              << ", \"bounces_converged\": " << (m.bouncesConverged ? "true" : "false")
              << ", \"ms_per_bounce\": " << jsonNumber(m.bounceMilliseconds)
