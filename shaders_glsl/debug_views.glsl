@@ -39,8 +39,16 @@ vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
     if (view == DEBUG_BASE_COLOR) return texelFetch(gBaseColor, pixel, 0).rgb;
     if (view == DEBUG_NORMAL) return normal * 0.5f + 0.5f;
     if (view == DEBUG_DEPTH) {
-        float distanceToCamera = length(positionMaterial.xyz - frame.cameraPosition);
-        return vec3(distanceToCamera / (frame.grid.originVoxelSize.w * float(frame.grid.resolution.x)));
+        // Distance from the camera, 0 at the nearest point of the voxel grid's box (which holds the
+        // scene) and 1 at its farthest corner, so the scene spans the whole range wherever the
+        // camera is (over the grid's side, a camera outside the scene saw nearly all white).
+        vec3 boxMin = frame.grid.originVoxelSize.xyz;
+        vec3 boxMax = boxMin + vec3(frame.grid.originVoxelSize.w * float(frame.grid.resolution.x));
+        vec3 camera = frame.cameraPosition;
+        float nearest = length(max(max(boxMin - camera, camera - boxMax), vec3(0.0f)));
+        float farthest = length(max(abs(boxMin - camera), abs(boxMax - camera)));
+        float distanceToCamera = length(positionMaterial.xyz - camera);
+        return vec3(clamp((distanceToCamera - nearest) / max(farthest - nearest, 1e-6f), 0.0f, 1.0f));
     }
     // Ambient occlusion: 1 = open, 0 = fully occluded.
     vec3 origin = positionMaterial.xyz + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);

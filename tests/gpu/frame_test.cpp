@@ -139,6 +139,30 @@ TEST_F(Frame, ShadingPipelinesFollowWhatTheFrameShows) {
     EXPECT_TRUE(same(renderer.readImage(), lit)) << "back from the debug view, the lit image changed";
 }
 
+TEST_F(Frame, TheDepthViewSpansTheSceneFromNearToFar) {
+    // The Cornell box from its camera outside the box: the depth view grows from the near walls'
+    // edges to the back wall, and neither saturates (it was over 0.9 nearly everywhere when it
+    // divided by the grid's side).
+    RenderSettings settings = smallSettings();
+    settings.shading.debugView = DebugView::Depth;
+    Renderer renderer(gpu(), scene, settings);
+    renderer.renderFrame();
+    const Image depth = renderer.readImage();
+    float lowest = 1.0f, highest = 0.0f;
+    size_t white = 0, pixels = depth.rgb.size() / 3;
+    for (size_t i = 0; i < pixels; ++i) {
+        const float value = depth.rgb[i * 3];
+        if (value <= 0.0f) continue;  // background
+        lowest = std::min(lowest, value);
+        highest = std::max(highest, value);
+        white += value > 0.95f;
+    }
+    EXPECT_LT(lowest, 0.35f);
+    EXPECT_GT(highest, 0.5f);
+    EXPECT_LT(highest, 1.0f);
+    EXPECT_LT(white, pixels / 100) << "the depth view saturates";
+}
+
 TEST_F(Frame, DirectLightNeedsNoVoxels) {
     RenderSettings settings = smallSettings();
     settings.shading.mode = RenderMode::Direct;
