@@ -36,7 +36,7 @@ spp_for() {
         *:indirect-1bounce) echo 2048 ;;
         cornell-emissive:indirect) echo 1024 ;;  # paths find the lamp by NEE and MIS: less noise
         *:indirect) echo 2048 ;;
-        cornell-emissive:direct) echo 128 ;;  # only the lamp seen by the camera: no light sampling
+        cornell-emissive:direct) echo 2048 ;;  # the lamp's light is sampled over its area: noisier
         *:direct) echo 512 ;;
     esac
 }

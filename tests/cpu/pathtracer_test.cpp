@@ -371,7 +371,8 @@ TEST(PathTracer, EmissiveTextureScalesTheEmissionTheCameraSees) {
 
 TEST(PathTracer, LightFromAnEmissiveTextureAgreesWithBrdfSamplingAlone) {
     // A white floor under a quad that glows through a half-black texture: light sampling must
-    // weigh each sampled point by its own texel (the emitter's choice uses the texture's mean).
+    // weigh each sampled point by its own texel (the emitter's choice uses the texture's mean). The
+    // floor's light from the quad is direct light (one reflection).
     Scene scene;
     scene.textures.push_back(halfBlackTexture(8));
     const uint32_t floor = addMaterial(scene, lambertian(glm::vec3(0.8f)));
@@ -387,9 +388,9 @@ TEST(PathTracer, LightFromAnEmissiveTextureAgreesWithBrdfSamplingAlone) {
     scene.cameras.push_back(camera);
     PathTracer tracer = createPathTracer(scene);
     constexpr uint32_t kSize = 16;
-    const RenderResult mis = render(tracer, smallRender(scene, kSize, 128, Component::Indirect, 41));
+    const RenderResult mis = render(tracer, smallRender(scene, kSize, 128, Component::Direct, 41));
     tracer.sampleEmitters = false;
-    const RenderResult brdfOnly = render(tracer, smallRender(scene, kSize, 128, Component::Indirect, 42));
+    const RenderResult brdfOnly = render(tracer, smallRender(scene, kSize, 128, Component::Direct, 42));
     const uint32_t h = kSize / 2;
     for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, h, kSize}, {h, 0, kSize, kSize}}) {
         const Estimate a = regionLuminance(mis, x0, y0, x1, y1);

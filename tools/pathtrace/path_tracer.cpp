@@ -310,10 +310,13 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
         const SurfacePoint s = surfaceAt(tracer, *hit, ray.direction);
         const bool gathers = depth <= tracer.maxDepth;
 
+        // Direct light is what reaches the camera from a light after at most one reflection: the
+        // emission it sees, and the light of punctual and emissive sources at the first hit (found
+        // there by light sampling, or one step later by BRDF sampling).
         if (!isBlack(s.emission)) {
             if (depth == 1) {
                 if (wantDirect) radiance += throughput * s.emission;
-            } else if (wantIndirect) {
+            } else if (depth == 2 ? wantDirect : wantIndirect) {
                 // Reached by BRDF sampling: weigh against the light sampling that could have found it.
                 const float cosLight = std::abs(glm::dot(s.geometricNormal, ray.direction));
                 const float lightPdf = tracer.sampleEmitters && cosLight > 0.0f
@@ -323,9 +326,12 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
             }
         }
         if (!gathers) break;
-        if (depth == 1 ? wantDirect : wantIndirect) radiance += throughput * punctualLight(tracer, s);
-        if (!wantIndirect) break;
-        if (tracer.sampleEmitters) radiance += throughput * emissiveLight(tracer, s, rng);
+        if (depth == 1 ? wantDirect : wantIndirect) {
+            radiance += throughput * punctualLight(tracer, s);
+            if (tracer.sampleEmitters) radiance += throughput * emissiveLight(tracer, s, rng);
+        }
+        // Direct light alone goes one step further only to find emitters by BRDF sampling.
+        if (!wantIndirect && !(depth == 1 && !tracer.emitters.triangles.empty())) break;
 
         const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
         const std::optional<BsdfSample> sample = sampleBsdf(s.material, s.shadingNormal, s.toViewer, uLobe, u1, u2);
