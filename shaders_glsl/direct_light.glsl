@@ -1,11 +1,12 @@
-// Direct light from KHR_lights_punctual lights at a surface point.
-// Requires: lights[] (GpuLight), frame, and shadows.glsl's bindings.
+// Direct light from KHR_lights_punctual lights and area lights at a surface point.
+// Requires: lights[] (GpuLight), emitterTriangles[] (GpuEmitterTriangle), frame, and shadows.glsl's bindings.
 #ifndef VCT_DIRECT_LIGHT_GLSL
 #define VCT_DIRECT_LIGHT_GLSL
 
 #include "brdf.h"
 #include "lights.h"
 #include "shadows.glsl"
+#include "area_lights.glsl"
 
 struct SurfacePoint {
     vec3 position;
@@ -35,12 +36,38 @@ vec3 incidentLight(GpuLight light, vec3 position, out vec3 toLight, out float di
     return light.radiantIntensity.rgb * attenuation;
 }
 
+// Reflected radiance towards the viewer from one area light: its exact irradiance through the
+// diffuse lobe (whose Fresnel weight is taken towards the light's centre), and an approximate
+// specular highlight (areaLightSpecular).
+vec3 areaLightReflected(GpuLight light, SurfacePoint surface, uint flags) {
+    vec3 irradiance = areaLightIrradiance(light, surface.position, surface.normal);
+    if (dot(irradiance, irradiance) <= 0.0f) return vec3(0.0f);
+    vec3 toCentre = light.positionRange.xyz - surface.position;
+    float distanceToLight = length(toCentre);
+    float visibility = shadowVisibility(light, surface.position, surface.normal, distanceToLight, true);
+    if (visibility <= 0.0f) return vec3(0.0f);
+    vec3 radiance = vec3(0.0f);
+    if ((flags & SHOW_DIRECT_DIFFUSE) != 0u) {
+        vec3 H = normalize(surface.toViewer + toCentre / max(distanceToLight, 1e-20f));
+        radiance += brdfDiffuse(surface.baseColor, surface.metallic, surface.specularWeight,
+                                max(dot(surface.toViewer, H), 0.0f)) * irradiance;
+    }
+    if ((flags & SHOW_DIRECT_SPECULAR) != 0u)
+        radiance += areaLightSpecular(light, surface.position, surface.normal, surface.toViewer, surface.baseColor,
+                                      surface.metallic, surface.roughness, surface.specularWeight);
+    return radiance * visibility;
+}
+
 // Reflected radiance towards the viewer from all lights, split by the SHOW_DIRECT_* flags.
 vec3 directLight(SurfacePoint surface, uint flags) {
     vec3 radiance = vec3(0.0f);
     float NdotV = max(dot(surface.normal, surface.toViewer), 1e-4f);
     for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
+        if (uint(light.radiantIntensity.w) == LIGHT_AREA) {
+            if ((flags & USE_AREA_LIGHTS) != 0u) radiance += areaLightReflected(light, surface, flags);
+            continue;
+        }
         vec3 toLight;
         float distanceToLight;
         vec3 irradiance = incidentLight(light, surface.position, toLight, distanceToLight);

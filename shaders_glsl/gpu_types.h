@@ -32,6 +32,16 @@ struct GpuLight {
     vec4 positionRange;     // xyz world position, w range (0 = infinite)
     vec4 direction;         // xyz direction the light travels
     vec4 spotShadow;        // x inner cone angle, y outer cone angle, z first shadow view, w shadow view count
+    // An area light (LIGHT_AREA) reads them as: rgb mean radiance; xyz its shadow cube's eye, w its
+    // radius; xyz its front normal, w its area; x its first emitter triangle, y their count.
+};
+
+// One triangle of an area light: corners wound so that cross(b − a, c − a) points out of the
+// emitting front face, and its radiance in their w components (r, g, b).
+struct GpuEmitterTriangle {
+    vec4 a;
+    vec4 b;
+    vec4 c;
 };
 
 // One rendered shadow map: a sun or spot light has one, a point light six (cube faces).
@@ -48,6 +58,9 @@ const uint SHOW_INDIRECT_SPECULAR = 8u;
 const uint SHOW_AMBIENT_OCCLUSION = 16u;
 const uint SHOW_EMISSION = 32u;
 const uint USE_SHADOWS = 64u;
+// Emissive surfaces light the room as area lights; without it their emission is put into the
+// voxels and reaches other surfaces only through the cones (the classic VCT way).
+const uint USE_AREA_LIGHTS = 128u;
 
 // The frame's constants, one uniform block (std140: every member sits at its natural offset, which
 // the C++ side checks with static_asserts).

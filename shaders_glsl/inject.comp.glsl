@@ -1,6 +1,9 @@
 #version 460
 // Light injection: the outgoing radiance of every occupied voxel, from the direct light it
-// receives (with shadow-map visibility) reflected diffusely, plus its emission. Written to
+// receives (with shadow-map visibility) reflected diffusely: from the punctual lights and from the
+// area lights. Emission itself stays out of the voxels: the area lights carry it, exactly, to the
+// pixels and to the voxels, and a cone that met it again would count it twice. With the area lights
+// off (USE_AREA_LIGHTS) the voxels emit it instead, for the cones to gather. Written to
 // level 0 of the radiance volume as radiance × scale premultiplied by opacity. One invocation per
 // voxel of the voxelizer's occupied list (voxel_grid.h); the empty voxels stay zero.
 // With addGathered = 1 each voxel also reflects the light its cones last gathered
@@ -17,15 +20,27 @@ layout(set = 0, binding = 3) uniform sampler2DArrayShadow sunShadowMaps;
 layout(set = 0, binding = 4) uniform sampler2DArrayShadow localShadowMaps;
 layout(set = 0, binding = 5, rgba8) uniform readonly image3D voxelAlbedo;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
-layout(set = 0, binding = 7, rgba16f) uniform readonly image3D voxelEmission;
+layout(std430, set = 0, binding = 7) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
 layout(set = 0, binding = 9, rgba16f) uniform readonly image3D gatheredLight;
 layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
 layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
+layout(set = 0, binding = 12, rgba16f) uniform readonly image3D voxelEmission;
 layout(push_constant) uniform Push { uint addGathered; };
 
 #include "voxel_grid.h"
 #include "direct_light.glsl"
+
+// An area light's irradiance at a voxel, taken half a voxel out along its normal (as the punctual
+// lights' shadows are); a voxel without a side faces the light at half strength.
+vec3 areaLightOnVoxel(GpuLight light, vec3 center, vec3 normalSum, float normalLength, float voxelSize) {
+    bool sided = normalLength > 0.25f;
+    vec3 normal = sided ? normalSum / normalLength : normalize(light.positionRange.xyz - center);
+    vec3 lookup = center + normal * (0.5f * voxelSize);
+    vec3 irradiance = areaLightIrradiance(light, lookup, normal) * (sided ? 1.0f : 0.5f);
+    if (dot(irradiance, irradiance) <= 0.0f) return vec3(0.0f);
+    return irradiance * shadowVisibility(light, lookup, normal, distance(light.positionRange.xyz, lookup), false);
+}
 
 void injectVoxel(ivec3 voxel) {
     vec4 albedoOpacity = imageLoad(voxelAlbedo, voxel);
@@ -34,9 +49,14 @@ void injectVoxel(ivec3 voxel) {
     vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
     float voxelSize = frame.grid.originVoxelSize.w;
 
+    bool areaLights = (frame.componentFlags & USE_AREA_LIGHTS) != 0u;
     vec3 irradiance = vec3(0.0f);
     for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
+        if (uint(light.radiantIntensity.w) == LIGHT_AREA) {
+            if (areaLights) irradiance += areaLightOnVoxel(light, center, normalSum, normalLength, voxelSize);
+            continue;
+        }
         vec3 toLight;
         float distanceToLight;
         vec3 incident = incidentLight(light, center, toLight, distanceToLight);
@@ -54,7 +74,8 @@ void injectVoxel(ivec3 voxel) {
         float visibility = shadowVisibility(light, lookup, normal, distanceToLight, false);
         irradiance += incident * cosine * visibility;
     }
-    vec3 outgoing = albedoOpacity.rgb * (1.0f / PI) * irradiance + imageLoad(voxelEmission, voxel).rgb;
+    vec3 outgoing = albedoOpacity.rgb * (1.0f / PI) * irradiance;
+    if (!areaLights) outgoing += imageLoad(voxelEmission, voxel).rgb;
     vec3 scaled = outgoing * frame.radianceScale;
     if (addGathered != 0u) scaled += imageLoad(gatheredLight, voxel).rgb;  // already scaled
     float opacity = albedoOpacity.a;

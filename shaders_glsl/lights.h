@@ -11,6 +11,9 @@ VCT_SHARED_BEGIN
 const uint LIGHT_DIRECTIONAL = 0u;
 const uint LIGHT_POINT = 1u;
 const uint LIGHT_SPOT = 2u;
+// An emissive surface (src/scene/area_lights.h): its GpuLight holds the mean radiance, the shadow
+// cube's eye and the light's radius, its front normal and area, and its range of emitter triangles.
+const uint LIGHT_AREA = 3u;
 
 // KHR_lights_punctual's recommended range falloff: smooth to zero at `range` (0 = none).
 SHARED_FN float rangeAttenuation(float distance, float range) {

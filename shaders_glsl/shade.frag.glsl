@@ -22,6 +22,7 @@ layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
 layout(set = 0, binding = 14) uniform sampler2DArray sunShadowDepths;
 layout(set = 0, binding = 15) uniform sampler2DArray localShadowDepths;
 layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive texture's colour
+layout(std430, set = 0, binding = 17) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
 #define SHADOW_BLOCKER_SEARCH
 
 #include "cone_tracing.glsl"

@@ -23,6 +23,7 @@ const float MAX_RECEIVER_SLOPE = 5.67f;
 // and a kernel as wide at contact as far away lights the crease where an occluder meets the
 // receiver (a wall standing on a floor) by half.
 const float TAN_LIGHT_ANGULAR_RADIUS = 0.0094f;
+const float AREA_KERNEL_SCALE = 8.0f;
 
 float sampleShadowMap(uint array, vec4 coordinate) {
     return array == 0u ? texture(sunShadowMaps, coordinate) : texture(localShadowMaps, coordinate);
@@ -84,12 +85,17 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
                                                                          : normalize(position - light.positionRange.xyz);
     float texelDepth = abs(shadowMapCoordinates(view, offsetPosition + lightAxis * texelWorld).z - centre.z);
     float change = length(depthGradient * texel);
-    if (change > MAX_RECEIVER_SLOPE * texelDepth) depthGradient *= MAX_RECEIVER_SLOPE * texelDepth / change;
+    bool grazing = change > MAX_RECEIVER_SLOPE * texelDepth;
+    if (grazing) depthGradient *= MAX_RECEIVER_SLOPE * texelDepth / change;
     // The normal offset keeps the centre tap clear of its own surface's texels (it lifts the point
     // 1.5 texels, more than the one texel a bilinear comparison spans at any slope); the plane
     // carries that margin to the other taps.
 
-    float radius = frame.pcfRadius;
+    // An area light's penumbra is as wide as the light seen from the occluder makes it, up to a
+    // kernel AREA_KERNEL_SCALE times wider than a point light's; but not on a receiver nearly edge
+    // on to the light, whose plane cannot be trusted that far (it would shadow itself).
+    bool areaLight = uint(light.radiantIntensity.w) == LIGHT_AREA;
+    float radius = areaLight && !grazing ? AREA_KERNEL_SCALE * frame.pcfRadius : frame.pcfRadius;
     // Blockers: texels of the kernel's footprint nearer the light than the receiver's plane there,
     // gathered four at a time over a 3×3 grid of taps. Their mean distance in front of the plane
     // sets the kernel's width; none means fully lit, all of them fully shadowed.
@@ -109,7 +115,9 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     if (blockers == 0.0f) return 1.0f;
     if (blockers == 36.0f) return 0.0f;
     float blockerDistance = blockerDepth / blockers / max(texelDepth, 1e-20f) * texelWorld;
-    radius = min(radius, blockerDistance * TAN_LIGHT_ANGULAR_RADIUS / texelWorld);
+    float tanAngularRadius = areaLight ? light.positionRange.w / max(distanceToLight - blockerDistance, 1e-20f)
+                                       : TAN_LIGHT_ANGULAR_RADIUS;
+    radius = min(radius, blockerDistance * tanAngularRadius / texelWorld);
     // Each tap is lit only if none of the four texels around it is nearer the light than the
     // receiver's plane there: within a texel of a crease the map holds both surfaces, and this
     // reads the floor beside a wall as shadowed rather than letting the wall's far side light it

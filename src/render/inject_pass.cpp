@@ -11,7 +11,7 @@ InjectPass::InjectPass(GpuContext& context)
       gatherPipeline(createComputePipeline(context, "bounce_gather.comp")),
       context_(context) {}
 
-void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const LightBuffers& lights,
                         const ShadowPass& shadows, VoxelVolumes& volumes, bool addGathered) {
     // Level 0 is rewritten whole; the cones that read it (the last frame's, a gather's) must be done.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -22,17 +22,18 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuf
     const VkImageView gathered = addGathered ? volumes.gatheredLight.view : volumes.lightLevelZeroViews()[0];
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .buffer(1, lights)
-        .buffer(2, shadowViews)
+        .buffer(1, lights.lights)
+        .buffer(2, lights.shadowViews)
         .sampledImage(3, shadows.sunMaps.view, shadows.compareSampler.sampler)
         .sampledImage(4, shadows.localMaps.view, shadows.compareSampler.sampler)
         .storageImage(5, volumes.albedoOpacity.view)
         .storageImage(6, volumes.normal.view)
-        .storageImage(7, volumes.emission.view)
+        .buffer(7, lights.emitterTriangles)
         .storageImage(8, volumes.lightLevelZeroViews()[0])
         .storageImage(9, gathered)
         .buffer(10, volumes.occupiedVoxels.buffer)
         .buffer(11, volumes.occupiedDispatch.buffer)
+        .storageImage(12, volumes.emission.view)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
     const uint32_t add = addGathered ? 1u : 0u;
     vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);

@@ -1,5 +1,5 @@
-// Light injection: direct light (with shadow-map visibility) and emission turned into the
-// outgoing radiance of every occupied voxel, written to level 0 of the radiance volume; and the
+// Light injection: direct light (with shadow-map visibility) from punctual and area lights turned
+// into the outgoing radiance of every occupied voxel, written to level 0 of the radiance volume; and the
 // bounce, each voxel's cones gathering the light of the volume for the next injection to add.
 #pragma once
 
@@ -16,7 +16,7 @@ struct InjectPass {
     // Writes level 0 of volumes.radiance from the scene voxels: the light sources' light reflected
     // once, plus (addGathered) what the last gather left in volumes.gatheredLight. Visible to the
     // mip pass after.
-    void record(VkCommandBuffer commands, VkBuffer frameConstants, VkBuffer lights, VkBuffer shadowViews,
+    void record(VkCommandBuffer commands, VkBuffer frameConstants, const LightBuffers& lights,
                 const ShadowPass& shadows, VoxelVolumes& volumes, bool addGathered);
 
     // Every sliceCount-th occupied voxel from slicePhase gathers the light of the current

@@ -77,6 +77,7 @@ void Renderer::setGeometry(const Scene& scene) {
     Scene local = scene;
     for (Vertex& vertex : local.vertices) vertex.position -= sceneOrigin_;
     sceneBounds_ = local.bounds();
+    areaLights_ = findAreaLights(local);
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     brightestEmission_ = 0.0f;
     anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
@@ -111,11 +112,13 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     std::vector<Light> local = lights;
     for (Light& light : local) light.position -= sceneOrigin_;
     const ShadowLayout previous = shadowLayout_;
-    shadowLayout_ = layoutShadows(local, sceneBounds_, settings_);
+    shadowLayout_ = layoutShadows(local, areaLights_, sceneBounds_, settings_);
     lightsBuffer_ =
         hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     shadowViewsBuffer_ =
         hostArray<glsl::ShadowView>(context_, shadowLayout_.views.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    emitterTrianglesBuffer_ = hostArray<glsl::GpuEmitterTriangle>(context_, shadowLayout_.emitterTriangles.size(),
+                                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     // A scene without lights has empty arrays, whose data() may be null: memcpy must not see it (UBSan).
     if (!shadowLayout_.lights.empty())
         std::memcpy(lightsBuffer_.mapped, shadowLayout_.lights.data(),
@@ -123,6 +126,9 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     if (!shadowLayout_.views.empty())
         std::memcpy(shadowViewsBuffer_.mapped, shadowLayout_.views.data(),
                     shadowLayout_.views.size() * sizeof(glsl::ShadowView));
+    if (!shadowLayout_.emitterTriangles.empty())
+        std::memcpy(emitterTrianglesBuffer_.mapped, shadowLayout_.emitterTriangles.data(),
+                    shadowLayout_.emitterTriangles.size() * sizeof(glsl::GpuEmitterTriangle));
     // New arrays only when the number of shadow maps changed; otherwise they are redrawn in place.
     if (!shadowPass_ || previous.sunLayers != shadowLayout_.sunLayers ||
         previous.localLayers != shadowLayout_.localLayers) {
@@ -235,8 +241,8 @@ FrameStats Renderer::renderFrame() {
             // sources alone: the same inputs, the same image.
             run(commands, Pass::Inject, [&] {
                 if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, slice);
-                injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer, shadowViewsBuffer_.buffer,
-                                   *shadowPass_, *volumes_, progressive);
+                injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_,
+                                   progressive);
             });
             run(commands, Pass::Mips, [&] {
                 mipsPass_.record(commands, *volumes_);
@@ -257,8 +263,7 @@ FrameStats Renderer::renderFrame() {
             submit([&](VkCommandBuffer commands) {
                 run(commands, Pass::Bounce, [&] {
                     injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, {});
-                    injectPass_.record(commands, frameConstants_.buffer, lightsBuffer_.buffer,
-                                       shadowViewsBuffer_.buffer, *shadowPass_, *volumes_, true);
+                    injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
                     mipsPass_.record(commands, *volumes_);
                     if (converging) recordMeanRadiance(commands);
                 });
@@ -278,12 +283,8 @@ FrameStats Renderer::renderFrame() {
                 .tracesDiffuseCones = !reducedDiffuse,
                 .tracesSpecularCone = anySpecularMaterial_ && effectiveComponents(settings_.shading).indirectSpecular,
             };
-            const ShadeInputs inputs{frameConstants_.buffer,
-                                     sceneGpu_->materials.buffer,
-                                     lightsBuffer_.buffer,
-                                     shadowViewsBuffer_.buffer,
-                                     reducedDiffuse ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE,
-                                     variant};
+            const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightBuffers(),
+                                     reducedDiffuse ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE, variant};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });

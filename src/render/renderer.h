@@ -98,6 +98,7 @@ private:
     Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
     Camera camera_;
     std::vector<Light> lights_;
+    std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
     float brightestEmission_ = 0.0f;
     bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter
@@ -114,6 +115,10 @@ private:
     uint32_t occupiedVoxels_ = 0;
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;
+    Buffer emitterTrianglesBuffer_;
+    LightBuffers lightBuffers() const {
+        return {lightsBuffer_.buffer, shadowViewsBuffer_.buffer, emitterTrianglesBuffer_.buffer};
+    }
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<VoxelVolumes> volumes_;  // sized by the settings' resources, kept across scenes
     std::unique_ptr<VoxelizePass> voxelizePass_;

@@ -87,7 +87,7 @@ void checkShadowMaps(const VkPhysicalDeviceLimits& limits, const std::string& de
                         side.name + " of " + std::to_string(side.value) + "; " + map.option + " " +
                         std::to_string(side.value) + " fits");
 
-    const ShadowLayout layout = layoutShadows(scene.lights, scene.bounds(), settings);
+    const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
     for (const uint32_t layers : {layout.sunLayers, layout.localLayers})
         if (layers > limits.maxImageArrayLayers)
             throw Error("scene '" + scene.name + "': its lights need " + std::to_string(layers) +
@@ -126,7 +126,7 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
     estimate.voxels =
         voxelVolumeBytes(settings.resources) + voxelizeAccumulationBytes(settings.resources.voxelResolution);
 
-    const ShadowLayout layout = layoutShadows(scene.lights, scene.bounds(), settings);
+    const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
     const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;
     const uint64_t localSide = layout.localLayers ? settings.resources.localShadowMapSize : 1;
     estimate.shadowMaps = (std::max(layout.sunLayers, 1u) * sunSide * sunSide +

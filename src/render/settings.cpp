@@ -36,8 +36,8 @@ const char* debugViewLabel(DebugView view) {
     return index < debugViewCount ? labels[index] : "?";
 }
 
-const std::array<ComponentInfo, 7>& componentTable() {
-    static const std::array<ComponentInfo, 7> table = {{
+const std::array<ComponentInfo, 8>& componentTable() {
+    static const std::array<ComponentInfo, 8> table = {{
         {&Components::directDiffuse, glsl::SHOW_DIRECT_DIFFUSE, "direct-diffuse", "direct diffuse"},
         {&Components::directSpecular, glsl::SHOW_DIRECT_SPECULAR, "direct-specular", "direct specular"},
         {&Components::indirectDiffuse, glsl::SHOW_INDIRECT_DIFFUSE, "indirect-diffuse", "indirect diffuse"},
@@ -45,6 +45,7 @@ const std::array<ComponentInfo, 7>& componentTable() {
         {&Components::ambientOcclusion, glsl::SHOW_AMBIENT_OCCLUSION, "ao", "ambient occlusion"},
         {&Components::emission, glsl::SHOW_EMISSION, "emission", "emission"},
         {&Components::shadows, glsl::USE_SHADOWS, "shadows", "shadows"},
+        {&Components::areaLights, glsl::USE_AREA_LIGHTS, "area-lights", "area lights"},
     }};
     return table;
 }

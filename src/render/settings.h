@@ -17,7 +17,8 @@
 namespace vct {
 
 // What the final image holds. `indirect` is everything but direct light (the same split as the
-// reference path tracer's: direct = punctual lights at the first hit + emission seen directly).
+// reference path tracer's: direct = emission seen directly + the light of punctual lights and of
+// emissive surfaces at the first hit).
 enum class RenderMode { Full, Direct, Indirect };
 
 std::optional<RenderMode> parseRenderMode(const std::string& name);
@@ -46,18 +47,19 @@ struct Components {
     bool ambientOcclusion = true;
     bool emission = true;
     bool shadows = true;
+    bool areaLights = true;
     bool operator==(const Components&) const = default;
 };
 
 // Each component once: its member, the SHOW_*/USE_* bit the shaders test, its --disable name and
-// its label in the viewer (whose keys 1…7 follow this order).
+// its label in the viewer (whose keys 1…8 follow this order).
 struct ComponentInfo {
     bool Components::*member;
     uint32_t shaderFlag;
     const char* option;
     const char* label;
 };
-const std::array<ComponentInfo, 7>& componentTable();
+const std::array<ComponentInfo, 8>& componentTable();
 uint32_t componentFlags(const Components& components);
 
 // ResourceSettings::bounces for "every bounce": each voxel's light includes what its own cones

@@ -26,8 +26,7 @@ struct ShadeVariant {
 struct ShadeInputs {
     VkBuffer frameConstants;
     VkBuffer materials;
-    VkBuffer lights;
-    VkBuffer shadowViews;
+    LightBuffers lights;
     VkImageView reducedDiffuse = VK_NULL_HANDLE;  // DiffuseConesPass::diffuse, when the cones run reduced
     ShadeVariant variant;
 };

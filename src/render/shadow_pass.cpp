@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gpu/commands.h"
+#include "lights.h"
 #include "render/camera.h"
 
 namespace vct {
@@ -24,11 +25,35 @@ glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, fl
 
 }  // namespace
 
-ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& sceneBounds,
-                           const RenderSettings& settings) {
+ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<AreaLight>& areaLights,
+                           const Bounds& sceneBounds, const RenderSettings& settings) {
     ShadowLayout layout;
     const glm::vec3 center = sceneBounds.center();
     const float radius = std::max(0.5f * glm::length(sceneBounds.extent()), 1e-6f);
+    const uint32_t localSize = settings.resources.localShadowMapSize;
+    // A perspective view's depth range: to the scene's farthest corner, near relative to it only
+    // (itself at least 1e-5), so a scene scaled by a power of two gets the same depth mapping and
+    // the same shadows.
+    auto farthestCorner = [&](const glm::vec3& eye) {
+        float farthest = 0.0f;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 point((corner & 1) ? sceneBounds.max.x : sceneBounds.min.x,
+                                  (corner & 2) ? sceneBounds.max.y : sceneBounds.min.y,
+                                  (corner & 4) ? sceneBounds.max.z : sceneBounds.min.z);
+            farthest = std::max(farthest, glm::distance(eye, point));
+        }
+        return std::max(farthest * 1.01f, 1e-5f);
+    };
+    auto addCube = [&](const glm::vec3& eye) {
+        const float zfar = farthestCorner(eye);
+        // Faces a little wider than 90° so the PCF kernel near a face edge stays inside the face.
+        const float margin = 1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(localSize);
+        const float fov = 2.0f * std::atan(margin);
+        const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        for (const glm::vec3& axis : axes)
+            layout.views.push_back(
+                perspectiveView(eye, axis, fov, zfar * 1e-4f, zfar, layout.localLayers++, localSize));
+    };
     for (const Light& light : lights) {
         glsl::GpuLight gpu{};
         gpu.radiantIntensity = glm::vec4(light.color * light.intensity, float(uint32_t(light.type)));
@@ -46,35 +71,32 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& scene
                                     2.0f * radius / float(settings.resources.sunShadowMapSize), 0.0f);
             layout.views.push_back(view);
             gpu.spotShadow.w = 1.0f;
+        } else if (light.type == LightType::Spot) {
+            const float zfar = farthestCorner(light.position);
+            const float fov = std::min(2.0f * light.outerConeAngle * 1.05f + 0.02f, glm::radians(170.0f));
+            layout.views.push_back(perspectiveView(light.position, light.direction, fov, zfar * 1e-4f, zfar,
+                                                   layout.localLayers++, localSize));
+            gpu.spotShadow.w = 1.0f;
         } else {
-            float farthest = 0.0f;
-            for (int corner = 0; corner < 8; ++corner) {
-                const glm::vec3 point((corner & 1) ? sceneBounds.max.x : sceneBounds.min.x,
-                                      (corner & 2) ? sceneBounds.max.y : sceneBounds.min.y,
-                                      (corner & 4) ? sceneBounds.max.z : sceneBounds.min.z);
-                farthest = std::max(farthest, glm::distance(light.position, point));
-            }
-            const float zfar = std::max(farthest * 1.01f, 1e-5f);
-            // Relative to zfar only (itself at least 1e-5), so a scene scaled by a power of two
-            // gets the same depth mapping and the same shadows.
-            const float znear = zfar * 1e-4f;
-            if (light.type == LightType::Spot) {
-                const float fov = std::min(2.0f * light.outerConeAngle * 1.05f + 0.02f, glm::radians(170.0f));
-                layout.views.push_back(perspectiveView(light.position, light.direction, fov, znear, zfar,
-                                                       layout.localLayers++, settings.resources.localShadowMapSize));
-                gpu.spotShadow.w = 1.0f;
-            } else {
-                // Faces a little wider than 90° so the PCF kernel near a face edge stays inside the face.
-                const float margin =
-                    1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(settings.resources.localShadowMapSize);
-                const float fov = 2.0f * std::atan(margin);
-                const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-                for (const glm::vec3& axis : axes)
-                    layout.views.push_back(perspectiveView(light.position, axis, fov, znear, zfar, layout.localLayers++,
-                                                           settings.resources.localShadowMapSize));
-                gpu.spotShadow.w = 6.0f;
-            }
+            addCube(light.position);
+            gpu.spotShadow.w = 6.0f;
         }
+        layout.lights.push_back(gpu);
+    }
+    for (const AreaLight& light : areaLights) {
+        glsl::GpuLight gpu{};
+        gpu.radiantIntensity = glm::vec4(light.meanRadiance, float(glsl::LIGHT_AREA));
+        // The cube's eye sits just in front of the surface, clear of it and of what it is mounted on.
+        const glm::vec3 eye = light.centroid + light.normal * std::max(1e-3f * radius, 1e-2f * light.radius);
+        gpu.positionRange = glm::vec4(eye, light.radius);
+        gpu.direction = glm::vec4(light.normal, light.area);
+        gpu.spotShadow = glm::vec4(float(layout.emitterTriangles.size()), float(light.triangles.size()),
+                                   float(layout.views.size()), 6.0f);
+        addCube(eye);
+        for (const EmitterTriangle& triangle : light.triangles)
+            layout.emitterTriangles.push_back({glm::vec4(triangle.corners[0], triangle.radiance.r),
+                                               glm::vec4(triangle.corners[1], triangle.radiance.g),
+                                               glm::vec4(triangle.corners[2], triangle.radiance.b)});
         layout.lights.push_back(gpu);
     }
     return layout;

@@ -1,5 +1,6 @@
 // Shadow maps for every light: a sun gets an orthographic map fitted to the scene, a spot a
-// perspective map over its cone, a point light six perspective maps (cube faces).
+// perspective map over its cone, a point light six perspective maps (cube faces), and an area light
+// (an emissive surface) a cube seen from just in front of its centre.
 #pragma once
 
 #include <vector>
@@ -9,19 +10,30 @@
 #include "gpu_types.h"
 #include "render/scene_gpu.h"
 #include "render/settings.h"
+#include "scene/area_lights.h"
 #include "scene/scene.h"
 
 namespace vct {
 
-// The shadow views of all lights, and the lights in GPU form pointing at their views.
+// The shadow views of all lights, and the lights in GPU form pointing at their views: the punctual
+// lights first, then the area lights, whose triangles follow in one array.
 struct ShadowLayout {
     std::vector<glsl::ShadowView> views;
     std::vector<glsl::GpuLight> lights;
+    std::vector<glsl::GpuEmitterTriangle> emitterTriangles;
     uint32_t sunLayers = 0;
     uint32_t localLayers = 0;
 };
 
-ShadowLayout layoutShadows(const std::vector<Light>& lights, const Bounds& sceneBounds, const RenderSettings& settings);
+// The buffers that describe a ShadowLayout to the shaders.
+struct LightBuffers {
+    VkBuffer lights;            // glsl::GpuLight
+    VkBuffer shadowViews;       // glsl::ShadowView
+    VkBuffer emitterTriangles;  // glsl::GpuEmitterTriangle (at least one element, unused without area lights)
+};
+
+ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<AreaLight>& areaLights,
+                           const Bounds& sceneBounds, const RenderSettings& settings);
 
 struct ShadowPass {
     ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings);

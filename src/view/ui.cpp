@@ -105,7 +105,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
     int mode = int(settings.shading.mode);
     ImGui::Combo("mode (M)", &mode, "full\0direct\0indirect\0");
     settings.shading.mode = RenderMode(mode);
-    // Two columns, each component labelled with its key (1…7, in the table's order).
+    // Two columns, each component labelled with its key (1…8, in the table's order).
     for (size_t i = 0; i < componentTable().size(); ++i) {
         const ComponentInfo& component = componentTable()[i];
         if (i % 2 == 1) ImGui::SameLine(0.5f * ImGui::GetWindowContentRegionMax().x);

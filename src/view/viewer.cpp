@@ -323,7 +323,7 @@ void Viewer::applyScript() {
 void Viewer::handleKeys(float seconds) {
     for (int key : input_.keysPressed) {
         RenderSettings& settings = state_.settings;
-        // Keys 1…7 toggle the components in componentTable()'s order.
+        // Keys 1…8 toggle the components in componentTable()'s order.
         if (key >= GLFW_KEY_1 && size_t(key - GLFW_KEY_1) < componentTable().size()) {
             bool& shown = settings.shading.components.*componentTable()[size_t(key - GLFW_KEY_1)].member;
             shown = !shown;

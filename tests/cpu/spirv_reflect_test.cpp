@@ -199,18 +199,20 @@ std::string reflectionError(const std::vector<uint32_t>& words, const std::strin
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
-    // inject.comp.glsl: frame, lights, shadow views, two shadow maps, four voxel images, the radiance
-    // level it writes, the gathered light it adds, and the occupied-voxel list and its count; one
-    // invocation per listed voxel, 64 to a workgroup.
+    // inject.comp.glsl: frame, lights, shadow views, two shadow maps, albedo and normal, the area
+    // lights' triangles, the radiance level it writes, the gathered light it adds, the occupied-voxel
+    // list and its count, and the voxels' emission; one invocation per listed voxel, 64 to a workgroup.
     const ShaderReflection inject = reflectFile("inject.comp");
     EXPECT_EQ(inject.stage, kCompute);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute),
                                               binding(0, 1, kStorageBuffer, kCompute),
                                               binding(0, 2, kStorageBuffer, kCompute),
                                               binding(0, 3, kCombined, kCompute), binding(0, 4, kCombined, kCompute)};
-    for (uint32_t b = 5; b <= 9; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
+    for (uint32_t b = 5; b <= 9; ++b)
+        expected.push_back(binding(0, b, b == 7 ? kStorageBuffer : kStorageImage, kCompute));
     expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
+    expected.push_back(binding(0, 12, kStorageImage, kCompute));
     expectBindings(inject.bindings, expected);
     EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint addGathered
     EXPECT_EQ(inject.localSize[0], 64u);
@@ -240,11 +242,12 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kFragment)};
     for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageBuffer, kFragment));
     for (uint32_t b = 4; b <= 11; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
-    expected.push_back(binding(0, 12, kCombined, kFragment, 6));  // the directional volumes
-    expected.push_back(binding(0, 13, kCombined, kFragment));     // the reduced diffuse cones
-    expected.push_back(binding(0, 14, kCombined, kFragment));     // the sun shadow maps' depths
-    expected.push_back(binding(0, 15, kCombined, kFragment));     // the local shadow maps' depths
-    expected.push_back(binding(0, 16, kCombined, kFragment));     // the G-buffer's emissive texture colour
+    expected.push_back(binding(0, 12, kCombined, kFragment, 6));    // the directional volumes
+    expected.push_back(binding(0, 13, kCombined, kFragment));       // the reduced diffuse cones
+    expected.push_back(binding(0, 14, kCombined, kFragment));       // the sun shadow maps' depths
+    expected.push_back(binding(0, 15, kCombined, kFragment));       // the local shadow maps' depths
+    expected.push_back(binding(0, 16, kCombined, kFragment));       // the G-buffer's emissive texture colour
+    expected.push_back(binding(0, 17, kStorageBuffer, kFragment));  // the area lights' triangles
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }
