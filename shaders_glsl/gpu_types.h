@@ -48,6 +48,7 @@ struct GpuEmitterTriangle {
 struct ShadowView {
     mat4 viewProjection;
     vec4 params;  // x array (0 = sun maps, 1 = local maps), y layer, z texel size at unit distance, w 1 = perspective
+    vec4 depthRange;  // perspective views: x near, y far (their depth d maps to f(d − n) / (d(f − n)))
 };
 
 // Bits of FrameConstants.componentFlags: which light components the final image contains.

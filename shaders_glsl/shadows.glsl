@@ -16,6 +16,11 @@ uint cubeFace(vec3 toSurface) {
     return toSurface.z >= 0.0f ? 4u : 5u;
 }
 
+// Any unit vector perpendicular to unit n.
+vec3 perpendicularTo(vec3 n) {
+    return normalize(cross(n, abs(n.x) < 0.9f ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f)));
+}
+
 // How far from facing the light a receiver's plane is trusted: tan 80°.
 const float MAX_RECEIVER_SLOPE = 5.67f;
 // The penumbra of an occluder at distance D is D·tan(LIGHT_ANGULAR_RADIUS) wide (the sun's 0.27°,
@@ -23,7 +28,6 @@ const float MAX_RECEIVER_SLOPE = 5.67f;
 // and a kernel as wide at contact as far away lights the crease where an occluder meets the
 // receiver (a wall standing on a floor) by half.
 const float TAN_LIGHT_ANGULAR_RADIUS = 0.0094f;
-const float AREA_KERNEL_SCALE = 8.0f;
 
 float sampleShadowMap(uint array, vec4 coordinate) {
     return array == 0u ? texture(sunShadowMaps, coordinate) : texture(localShadowMaps, coordinate);
@@ -35,6 +39,114 @@ vec3 shadowMapCoordinates(ShadowView view, vec3 position) {
     vec3 ndc = clip.xyz / clip.w;
     return vec3(ndc.xy * 0.5f + 0.5f, ndc.z);
 }
+
+#ifdef SHADOW_BLOCKER_SEARCH
+// Soft shadows of an area light from its shadow cube (seen from the light's centre), in two steps.
+// 1. Blocker search (as in percentage-closer soft shadows, Fernando 2005): the texels around the
+//    receiver that hide part of the light give the mean distance Δ of the occluders in front of it.
+// 2. Visibility: rays from the receiver to AREA_SHADOW_TAPS points spread over the disc of the
+//    light's area are each tested where they cross that distance Δ, a point in free space, against
+//    the cube: a ray whose point lies behind what the cube saw is blocked. Unlike a filter kernel
+//    centred on the receiver this knows which side of the light each ray goes to, so a box standing
+//    on the floor hides the whole light from the floor at its foot (PCSS let in half), and testing
+//    points off the surface, not the receiver's own plane, cannot shadow the receiver itself.
+// The spiral of points turns per shadow-map texel: fine noise instead of banding.
+const int AREA_SHADOW_TAPS = 16;
+const float AREA_SHADOW_SEARCH_TEXELS = 48.0f;  // the widest blocker search, in texels
+
+// For each of four texels at `tapDistance` texels from the receiver's centre, `inFront` of its plane
+// (along the ray to the light), 1 if it hides part of the light from the receiver: it lies beyond
+// the receiver's own surface
+// and inside the cone from the receiver to the light, within r·Δ/(d − Δ) of it at Δ in front (a
+// texel of slack). This keeps a floor from counting as an occluder for the foot of a wall that
+// stands on it, and a surface seen nearly edge on from counting for itself.
+vec4 hidesLight(vec4 inFront, float tapDistance, float ownSurface, float texelWorld, float distanceToLight,
+                float lightRadius) {
+    vec4 reach = lightRadius * inFront / max(vec4(distanceToLight) - inFront, vec4(1e-20f)) + texelWorld;
+    return vec4(greaterThan(inFront, vec4(ownSurface))) * vec4(lessThanEqual(vec4(tapDistance * texelWorld), reach));
+}
+
+// AREA_SHADOW_TAPS points on a golden-angle spiral over the unit disc: √((i + ½)/n) at i · 137.5°.
+const vec2 AREA_SHADOW_SPIRAL[AREA_SHADOW_TAPS] = vec2[](
+    vec2(0.176777f, 0.000000f),
+    vec2(-0.225772f, 0.206826f),
+    vec2(0.034558f, -0.393771f),
+    vec2(0.284571f, 0.371173f),
+    vec2(-0.522223f, -0.092374f),
+    vec2(0.494695f, -0.314685f),
+    vec2(-0.165466f, 0.615525f),
+    vec2(-0.315561f, -0.607594f),
+    vec2(0.684642f, 0.250030f),
+    vec2(-0.712256f, 0.294009f),
+    vec2(0.343355f, -0.733729f),
+    vec2(0.253730f, 0.808932f),
+    vec2(-0.764746f, -0.443186f),
+    vec2(0.897134f, -0.197232f),
+    vec2(-0.547507f, 0.778772f),
+    vec2(-0.126487f, -0.976090f));
+
+// The distance along a perspective view's axis of a depth stored in its map.
+vec4 viewDepth(ShadowView view, vec4 stored) {
+    float near = view.depthRange.x, far = view.depthRange.y;
+    return near * far / (vec4(far) - stored * (far - near));
+}
+
+float areaLightShadow(GpuLight light, ShadowView view, vec3 position, vec3 normal, vec3 centre, vec2 depthGradient,
+                      vec2 texel, float texelWorld, float distanceToLight) {
+    uint array = uint(view.params.x);
+    float layer = view.params.y;
+    vec3 eye = light.positionRange.xyz;
+    vec3 front = light.direction.xyz;
+    float discRadius = sqrt(light.direction.w / PI);
+    float reachRadius = light.positionRange.w;  // every corner of the light lies within it
+    // Interleaved gradient noise (Jimenez 2014) of the shadow-map texel turns the spiral.
+    float turn = 6.2831853f * fract(52.9829189f * fract(dot(floor(centre.xy / texel), vec2(0.06711056f, 0.00583715f))));
+    mat2 rotation = mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
+    // A texel of a surface seen at angle θ from its normal spans texelWorld·tanθ in depth: its own
+    // texels lie that far in front of its plane's centre.
+    float cosine = clamp(dot(normal, normalize(eye - position)), 0.1f, 1.0f);
+    float ownSurface = 1.5f * texelWorld * (1.0f + sqrt(1.0f - cosine * cosine) / cosine);
+    // View depths turn into distances along the ray to the light's centre by this factor.
+    float alongRay = distanceToLight / max((view.viewProjection * vec4(position, 1.0f)).w, 1e-20f);
+
+    float searchRadius = clamp(reachRadius / texelWorld, frame.pcfRadius, AREA_SHADOW_SEARCH_TEXELS);
+    float blockerDistance = 0.0f;
+    float blockers = 0.0f;
+    for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
+        vec2 tap = (rotation * AREA_SHADOW_SPIRAL[i]) * searchRadius;
+        vec2 offset = tap * texel;
+        vec3 coordinate = vec3(centre.xy + offset, layer);
+        vec4 stored = array == 0u ? textureGather(sunShadowDepths, coordinate, 0)
+                                  : textureGather(localShadowDepths, coordinate, 0);
+        float receiverDepth = viewDepth(view, vec4(centre.z + dot(depthGradient, offset))).x;
+        vec4 inFront = (vec4(receiverDepth) - viewDepth(view, stored)) * alongRay;
+        vec4 hides = hidesLight(inFront, length(tap), ownSurface, texelWorld, distanceToLight, reachRadius);
+        blockers += dot(hides, vec4(1.0f));
+        blockerDistance += dot(hides, inFront);
+    }
+    if (blockers == 0.0f) return 1.0f;
+    // Just short of the occluders, where a ray that meets them is still behind them from the light.
+    blockerDistance = max(0.9f * blockerDistance / blockers, ownSurface);
+
+    vec3 tangent = perpendicularTo(front);
+    vec3 bitangent = cross(front, tangent);
+    // Each ray counts by the cosine it arrives at: the part of the light below the receiver's
+    // horizon, which its irradiance already leaves out, must not count as shadowed.
+    float lit = 0.0f;
+    float total = 0.0f;
+    for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
+        vec2 onDisc = (rotation * AREA_SHADOW_SPIRAL[i]) * discRadius;
+        vec3 toSample = eye + tangent * onDisc.x + bitangent * onDisc.y - position;
+        float sampleDistance = length(toSample);
+        float weight = max(dot(toSample, normal), 0.0f) / sampleDistance;
+        vec3 probe = position + toSample * (min(blockerDistance, 0.98f * sampleDistance) / sampleDistance);
+        vec3 coordinate = shadowMapCoordinates(view, probe);
+        lit += weight * sampleShadowMap(array, vec4(coordinate.xy, layer, coordinate.z));
+        total += weight;
+    }
+    return total > 0.0f ? lit / total : 1.0f;
+}
+#endif
 
 // Fraction of the light's view that reaches `position` (1 = lit). The position is pushed along
 // the normal by a few shadow-map texels (normal-offset shadows), and each PCF tap compares
@@ -85,17 +197,15 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
                                                                          : normalize(position - light.positionRange.xyz);
     float texelDepth = abs(shadowMapCoordinates(view, offsetPosition + lightAxis * texelWorld).z - centre.z);
     float change = length(depthGradient * texel);
-    bool grazing = change > MAX_RECEIVER_SLOPE * texelDepth;
-    if (grazing) depthGradient *= MAX_RECEIVER_SLOPE * texelDepth / change;
+    if (change > MAX_RECEIVER_SLOPE * texelDepth) depthGradient *= MAX_RECEIVER_SLOPE * texelDepth / change;
     // The normal offset keeps the centre tap clear of its own surface's texels (it lifts the point
     // 1.5 texels, more than the one texel a bilinear comparison spans at any slope); the plane
     // carries that margin to the other taps.
 
-    // An area light's penumbra is as wide as the light seen from the occluder makes it, up to a
-    // kernel AREA_KERNEL_SCALE times wider than a point light's; but not on a receiver nearly edge
-    // on to the light, whose plane cannot be trusted that far (it would shadow itself).
-    bool areaLight = uint(light.radiantIntensity.w) == LIGHT_AREA;
-    float radius = areaLight && !grazing ? AREA_KERNEL_SCALE * frame.pcfRadius : frame.pcfRadius;
+    if (uint(light.radiantIntensity.w) == LIGHT_AREA)
+        return areaLightShadow(light, view, offsetPosition, normal, centre, depthGradient, texel, texelWorld,
+                               distanceToLight);
+    float radius = frame.pcfRadius;
     // Blockers: texels of the kernel's footprint nearer the light than the receiver's plane there,
     // gathered four at a time over a 3×3 grid of taps. Their mean distance in front of the plane
     // sets the kernel's width; none means fully lit, all of them fully shadowed.
@@ -115,9 +225,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     if (blockers == 0.0f) return 1.0f;
     if (blockers == 36.0f) return 0.0f;
     float blockerDistance = blockerDepth / blockers / max(texelDepth, 1e-20f) * texelWorld;
-    float tanAngularRadius = areaLight ? light.positionRange.w / max(distanceToLight - blockerDistance, 1e-20f)
-                                       : TAN_LIGHT_ANGULAR_RADIUS;
-    radius = min(radius, blockerDistance * tanAngularRadius / texelWorld);
+    radius = min(radius, blockerDistance * TAN_LIGHT_ANGULAR_RADIUS / texelWorld);
     // Each tap is lit only if none of the four texels around it is nearer the light than the
     // receiver's plane there: within a texel of a crease the map holds both surfaces, and this
     // reads the floor beside a wall as shadowed rather than letting the wall's far side light it

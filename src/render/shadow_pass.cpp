@@ -20,6 +20,7 @@ glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, fl
     view.viewProjection = glm::perspective(fov, 1.0f, znear, zfar) * lookAlong(eye, forward, glm::vec3(0, 1, 0));
     // World size of one texel at distance 1 from the light.
     view.params = glm::vec4(1.0f, float(layer), 2.0f * std::tan(0.5f * fov) / float(size), 1.0f);
+    view.depthRange = glm::vec4(znear, zfar, 0.0f, 0.0f);
     return view;
 }
 
