@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 #include "scene/material_textures.h"
@@ -69,6 +70,54 @@ std::vector<Emitter> emissiveTriangles(const Scene& scene, std::vector<uint32_t>
     return emitters;
 }
 
+// The rectangle in the group's plane that bounds it, oriented along its spread, glowing with the
+// group's power spread evenly; none if the group is not flat (a triangle off the mean plane by more
+// than 1 % of its size, or turned more than 8° from it).
+std::optional<std::vector<EmitterTriangle>> boundingRectangle(const std::vector<const Emitter*>& members,
+                                                              const AreaLight& light) {
+    float size = 0.0f;
+    for (const Emitter* e : members)
+        for (const glm::vec3& corner : e->triangle.corners)
+            size = std::max(size, glm::distance(corner, light.centroid));
+    for (const Emitter* e : members) {
+        if (glm::dot(e->frontNormal, light.normal) < 0.99f) return std::nullopt;
+        for (const glm::vec3& corner : e->triangle.corners)
+            if (std::abs(glm::dot(corner - light.centroid, light.normal)) > 0.01f * size) return std::nullopt;
+    }
+    // Axes: the principal direction of the triangles' centres in the plane, and its perpendicular.
+    const glm::vec3 helper = std::abs(light.normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 u = glm::normalize(glm::cross(light.normal, helper));
+    const glm::vec3 v = glm::cross(light.normal, u);
+    float uu = 0.0f, uv = 0.0f, vv = 0.0f;
+    for (const Emitter* e : members) {
+        const glm::vec3 d =
+            (e->triangle.corners[0] + e->triangle.corners[1] + e->triangle.corners[2]) / 3.0f - light.centroid;
+        uu += e->area * glm::dot(d, u) * glm::dot(d, u);
+        uv += e->area * glm::dot(d, u) * glm::dot(d, v);
+        vv += e->area * glm::dot(d, v) * glm::dot(d, v);
+    }
+    const float angle = 0.5f * std::atan2(2.0f * uv, uu - vv);
+    const glm::vec3 axisU = std::cos(angle) * u + std::sin(angle) * v;
+    const glm::vec3 axisV = glm::cross(light.normal, axisU);
+    glm::vec2 low(1e30f), high(-1e30f);
+    glm::vec3 power(0.0f);
+    for (const Emitter* e : members) {
+        power += e->area * e->triangle.radiance;
+        for (const glm::vec3& corner : e->triangle.corners) {
+            const glm::vec2 p(glm::dot(corner - light.centroid, axisU), glm::dot(corner - light.centroid, axisV));
+            low = glm::min(low, p);
+            high = glm::max(high, p);
+        }
+    }
+    const float area = (high.x - low.x) * (high.y - low.y);
+    if (!(area > 0.0f)) return std::nullopt;
+    auto at = [&](float a, float b) { return light.centroid + axisU * a + axisV * b; };
+    // Wound so that cross(b − a, c − a) = axisU × axisV = the front normal.
+    const glm::vec3 radiance = power / area;
+    return std::vector<EmitterTriangle>{{{at(low.x, low.y), at(high.x, low.y), at(high.x, high.y)}, radiance},
+                                        {{at(low.x, low.y), at(high.x, high.y), at(low.x, high.y)}, radiance}};
+}
+
 AreaLight makeLight(const std::vector<const Emitter*>& members, size_t triangleBudget) {
     AreaLight light;
     glm::vec3 weightedNormal(0.0f);
@@ -83,22 +132,33 @@ AreaLight makeLight(const std::vector<const Emitter*>& members, size_t triangleB
     const float normalLength = glm::length(weightedNormal);
     if (normalLength > 1e-6f * light.area) light.normal = weightedNormal / normalLength;
 
-    // The brightest triangles (by power) stand in for the rest, which lend them their power.
-    std::vector<const Emitter*> kept = members;
-    std::stable_sort(kept.begin(), kept.end(), [](const Emitter* a, const Emitter* b) {
-        return a->area * luminance(a->triangle.radiance) > b->area * luminance(b->triangle.radiance);
-    });
-    light.droppedTriangles = kept.size() > triangleBudget ? kept.size() - triangleBudget : 0;
-    kept.resize(std::min(kept.size(), triangleBudget));
-    float keptPower = 0.0f, keptArea = 0.0f;
-    for (const Emitter* e : kept) keptPower += e->area * luminance(e->triangle.radiance);
-    const float scale = keptPower > 0.0f ? power / keptPower : 1.0f;
-    for (const Emitter* e : kept) {
-        EmitterTriangle triangle = e->triangle;
-        triangle.radiance *= scale;
-        light.triangles.push_back(triangle);
-        light.meanRadiance += e->area * triangle.radiance;
-        keptArea += e->area;
+    if (members.size() <= triangleBudget) {
+        for (const Emitter* e : members) light.triangles.push_back(e->triangle);
+    } else if (std::optional<std::vector<EmitterTriangle>> rectangle = boundingRectangle(members, light)) {
+        light.triangles = *rectangle;
+        light.approximation = AreaLight::Approximation::BoundingRectangle;
+    } else {
+        // The brightest triangles (by power) stand in for the rest, which lend them their power.
+        std::vector<const Emitter*> kept = members;
+        std::stable_sort(kept.begin(), kept.end(), [](const Emitter* a, const Emitter* b) {
+            return a->area * luminance(a->triangle.radiance) > b->area * luminance(b->triangle.radiance);
+        });
+        kept.resize(triangleBudget);
+        float keptPower = 0.0f;
+        for (const Emitter* e : kept) keptPower += e->area * luminance(e->triangle.radiance);
+        const float scale = keptPower > 0.0f ? power / keptPower : 1.0f;
+        for (const Emitter* e : kept)
+            light.triangles.push_back({{e->triangle.corners[0], e->triangle.corners[1], e->triangle.corners[2]},
+                                       e->triangle.radiance * scale});
+        light.approximation = AreaLight::Approximation::BrightestTriangles;
+    }
+    light.sourceTriangles = members.size();
+    float keptArea = 0.0f;
+    for (const EmitterTriangle& triangle : light.triangles) {
+        const float area = 0.5f * glm::length(glm::cross(triangle.corners[1] - triangle.corners[0],
+                                                         triangle.corners[2] - triangle.corners[0]));
+        light.meanRadiance += area * triangle.radiance;
+        keptArea += area;
         for (const glm::vec3& corner : triangle.corners)
             light.radius = std::max(light.radius, glm::distance(corner, light.centroid));
     }

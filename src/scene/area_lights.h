@@ -14,9 +14,11 @@
 namespace vct {
 
 // Bounds on what the direct light evaluates per pixel: lights (a shadow cube each) and triangles
-// over all of them. A scene with more keeps its brightest triangles, whose radiance is raised so
-// that each light keeps its power: exact far from the light, patchy close to a mesh of many small
-// emitters.
+// over all of them. Past kMaxAreaLights, surfaces that lie near each other merge into one light;
+// a light with more than its share of the triangles is approximated: a flat one by the rectangle
+// that bounds it, glowing evenly with its power (a grid of small tiles becomes one panel: right
+// from afar and in its mean, too even right under it), another by its brightest triangles, whose
+// radiance is raised so that the light keeps its power.
 constexpr size_t kMaxAreaLights = 8;
 constexpr size_t kMaxAreaLightTriangles = 128;
 
@@ -29,10 +31,12 @@ struct AreaLight {
     std::vector<EmitterTriangle> triangles;
     glm::vec3 centroid{0.0f};            // area-weighted
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // area-weighted front normal, unit
-    float area = 0.0f;                   // of the triangles it had before any were dropped
+    float area = 0.0f;                   // of the scene's triangles it stands for
     float radius = 0.0f;                 // of the sphere around the centroid that holds every corner
-    glm::vec3 meanRadiance{0.0f};        // area-weighted, of the triangles kept
-    size_t droppedTriangles = 0;         // stood in for by the kept ones (kMaxAreaLightTriangles)
+    glm::vec3 meanRadiance{0.0f};        // area-weighted, of the triangles it is drawn with
+    size_t sourceTriangles = 0;          // the scene's triangles it stands for
+    enum class Approximation { None, BoundingRectangle, BrightestTriangles };
+    Approximation approximation = Approximation::None;
 };
 
 // The scene's emissive triangles (front-face emission above zero) grouped into lights: triangles of

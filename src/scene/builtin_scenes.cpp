@@ -10,8 +10,9 @@
 // Beside it, the scenes `vct bench` measures (see README, "Benchmark"): `sun-room` (a closed room
 // lit by the sun through a hole in its roof, so most of what the camera sees is indirect light),
 // `cornell-metal` (a glossy gold sphere for the specular cone), `cornell-sun` (the box without its
-// ceiling, lit by a sun: the scene of issue 13's comparison with an OpenGL VCT), and `terrain` (a procedural
-// height field with spheres, about 60 000 triangles, for timing).
+// ceiling, lit by a sun: the scene of issue 13's comparison with an OpenGL VCT), `terrain` (a procedural
+// height field with spheres, about 60 000 triangles, for timing), and two rooms lit only by emissive
+// surfaces (area lights): `panel-room` by a screen showing a picture, `tile-room` by 576 small lamps.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -243,6 +244,92 @@ Scene makeSunRoom() {
     return builder.scene;
 }
 
+// The 4 × 2.5 × 4 m room of the area-light scenes: white walls, a grey floor, a blue wall on the
+// right, a low box and a tall one on the floor; the camera stands at the front looking to the back.
+void addLampRoom(SceneBuilder& builder) {
+    builder.unit = 1.0f;
+    const uint32_t white = builder.addMaterial("white", {0.725f, 0.71f, 0.68f});
+    const uint32_t grey = builder.addMaterial("grey floor", {0.45f, 0.45f, 0.45f});
+    const uint32_t blue = builder.addMaterial("blue", {0.1f, 0.2f, 0.6f});
+    const glm::vec3 inside(2.0f, 1.25f, 2.0f);
+    builder.addQuad({{{0, 0, 0}, {4, 0, 0}, {4, 0, 4}, {0, 0, 4}}}, inside, grey);               // floor
+    builder.addQuad({{{0, 2.5f, 0}, {4, 2.5f, 0}, {4, 2.5f, 4}, {0, 2.5f, 4}}}, inside, white);  // ceiling
+    builder.addQuad({{{0, 0, 0}, {0, 2.5f, 0}, {0, 2.5f, 4}, {0, 0, 4}}}, inside, white);        // x = 0
+    builder.addQuad({{{4, 0, 0}, {4, 2.5f, 0}, {4, 2.5f, 4}, {4, 0, 4}}}, inside, blue);         // x = 4
+    builder.addQuad({{{0, 0, 0}, {4, 0, 0}, {4, 2.5f, 0}, {0, 2.5f, 0}}}, inside, white);        // behind the camera
+    builder.addQuad({{{0, 0, 4}, {4, 0, 4}, {4, 2.5f, 4}, {0, 2.5f, 4}}}, inside, white);        // back wall
+    builder.addBox({0.7f, 0.0f, 2.2f}, {1.9f, 0.45f, 2.9f}, white);
+    builder.addBox({2.7f, 0.0f, 2.6f}, {3.2f, 1.6f, 3.1f}, white);
+    builder.scene.cameras.push_back(cameraLookingAt("room camera", {2.0f, 1.5f, 0.15f}, {2.0f, 0.9f, 4.0f}, 75.0f));
+}
+
+// An sRGB picture of a sunset over the sea, `width` × `height`: sky from blue to orange, a yellow sun
+// at the horizon, dark blue water. Procedural, so the scene needs no file.
+Texture sunsetPicture(uint32_t width, uint32_t height) {
+    Texture texture;
+    texture.name = "sunset (procedural)";
+    texture.width = width;
+    texture.height = height;
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            const float u = (float(x) + 0.5f) / float(width), v = (float(y) + 0.5f) / float(height);  // v down
+            glm::vec3 colour;
+            if (v < 0.6f) {
+                const float t = v / 0.6f;  // from the top of the sky to the horizon
+                colour = glm::mix(glm::vec3(0.15f, 0.3f, 0.75f), glm::vec3(1.0f, 0.55f, 0.2f), t * t);
+            } else {
+                colour = glm::mix(glm::vec3(0.1f, 0.15f, 0.35f), glm::vec3(0.02f, 0.05f, 0.15f), (v - 0.6f) / 0.4f);
+            }
+            const float sun = glm::length(glm::vec2((u - 0.5f) * float(width) / float(height), v - 0.55f));
+            if (sun < 0.1f) colour = glm::vec3(1.0f, 0.9f, 0.5f);
+            for (float c : {colour.r, colour.g, colour.b}) texture.rgba8.push_back(uint8_t(std::lround(255.0f * c)));
+            texture.rgba8.push_back(255);
+        }
+    return texture;
+}
+
+// The lamp room lit only by a textured emissive screen on its back wall (1.6 × 0.9 m, showing a
+// sunset): the light's colour and strength come from the texture.
+Scene makePanelRoom() {
+    SceneBuilder builder;
+    builder.scene.name = "panel-room";
+    addLampRoom(builder);
+    builder.scene.textures.push_back(sunsetPicture(64, 36));
+    const uint32_t screen = builder.addMaterial("screen", {0.05f, 0.05f, 0.05f}, glm::vec3(20.0f));
+    builder.scene.materials[screen].emissiveTexture = 0;
+    // 2 cm in front of the back wall, facing the room; u to the right and v down as the camera sees it.
+    const float z = 3.98f, left = 2.8f, right = 1.2f, bottom = 0.8f, top = 1.7f;
+    const glm::vec3 normal(0.0f, 0.0f, -1.0f);
+    const uint32_t first = uint32_t(builder.scene.vertices.size());
+    builder.scene.vertices.push_back({{left, top, z}, 0.0f, normal, 0.0f});
+    builder.scene.vertices.push_back({{right, top, z}, 1.0f, normal, 0.0f});
+    builder.scene.vertices.push_back({{right, bottom, z}, 1.0f, normal, 1.0f});
+    builder.scene.vertices.push_back({{left, bottom, z}, 0.0f, normal, 1.0f});
+    for (uint32_t index : {0u, 2u, 1u, 0u, 3u, 2u}) builder.scene.indices.push_back(first + index);
+    builder.scene.triangleMaterials.insert(builder.scene.triangleMaterials.end(), {screen, screen});
+    return builder.scene;
+}
+
+// The lamp room lit only by a grid of 24 × 24 small square lamps (5 cm, 1152 triangles) under its
+// ceiling: more emitters than the area lights take one by one.
+Scene makeTileRoom() {
+    SceneBuilder builder;
+    builder.scene.name = "tile-room";
+    addLampRoom(builder);
+    const uint32_t lamp = builder.addMaterial("lamp", {0.8f, 0.8f, 0.8f}, glm::vec3(12.0f, 11.0f, 9.0f));
+    const glm::vec3 below(2.0f, 0.0f, 2.0f);
+    for (int i = 0; i < 24; ++i)
+        for (int j = 0; j < 24; ++j) {
+            const float x = 0.275f + 0.15f * float(i), z = 0.275f + 0.15f * float(j), y = 2.49f;
+            builder.addQuad({{{x - 0.025f, y, z - 0.025f},
+                              {x + 0.025f, y, z - 0.025f},
+                              {x + 0.025f, y, z + 0.025f},
+                              {x - 0.025f, y, z + 0.025f}}},
+                            below, lamp);
+        }
+    return builder.scene;
+}
+
 // A 20 × 20 m height field of 160 × 160 cells (sums of sines, so it needs no random numbers or
 // data files) with a 4 × 4 grid of spheres on it, under a low sun: about 60 000 triangles.
 Scene makeTerrain() {
@@ -293,7 +380,8 @@ Scene makeTerrain() {
 }  // namespace
 
 std::vector<std::string> builtinSceneNames() {
-    return {"cornell", "cornell-emissive", "cornell-metal", "cornell-sun", "sun-room", "terrain"};
+    return {"cornell",  "cornell-emissive", "cornell-metal", "cornell-sun",
+            "sun-room", "terrain",          "panel-room",    "tile-room"};
 }
 
 Scene loadScene(const std::string& nameOrPath, const LoadOptions& options) {
@@ -303,6 +391,8 @@ Scene loadScene(const std::string& nameOrPath, const LoadOptions& options) {
     if (nameOrPath == "cornell-sun") return makeCornellBox(CornellLight::SunThroughOpenTop);
     if (nameOrPath == "sun-room") return makeSunRoom();
     if (nameOrPath == "terrain") return makeTerrain();
+    if (nameOrPath == "panel-room") return makePanelRoom();
+    if (nameOrPath == "tile-room") return makeTileRoom();
     return loadGltf(nameOrPath, options);
 }
 

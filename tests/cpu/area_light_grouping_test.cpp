@@ -1,0 +1,118 @@
+// Emissive triangles grouped into area lights (src/scene/area_lights.h): one light per surface,
+// merged past kMaxAreaLights, and approximated past the triangle budget with their power kept.
+#include <gtest/gtest.h>
+
+#include "scene/area_lights.h"
+#include "scene/load.h"
+
+namespace vct {
+namespace {
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// A floor-sized scene with `n`×`n` separate square tiles of side 0.1 m under a ceiling at y = 2,
+// glowing downwards with radiance 5; the tiles of the first row glow 10.
+Scene tiledCeiling(int n) {
+    Scene scene;
+    scene.name = "tiles";
+    Material dark;
+    Material glow;
+    glow.emission = glm::vec3(5.0f);
+    Material brighter;
+    brighter.emission = glm::vec3(10.0f);
+    scene.materials = {dark, glow, brighter};
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const glm::vec3 c(0.3f * float(i), 2.0f, 0.3f * float(j));
+            const uint32_t base = uint32_t(scene.vertices.size());
+            for (glm::vec3 d : {glm::vec3(-0.05f, 0, -0.05f), glm::vec3(0.05f, 0, -0.05f), glm::vec3(0.05f, 0, 0.05f),
+                                glm::vec3(-0.05f, 0, 0.05f)})
+                scene.vertices.push_back({c + d, 0.0f, glm::vec3(0, -1, 0), 0.0f});
+            for (uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(base + k);
+            const uint32_t material = i == 0 ? 2u : 1u;
+            scene.triangleMaterials.insert(scene.triangleMaterials.end(), {material, material});
+        }
+    return scene;
+}
+
+float lightPower(const AreaLight& light) {
+    float power = 0.0f;
+    for (const EmitterTriangle& t : light.triangles)
+        power += 0.5f * glm::length(glm::cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0])) *
+                 luminance(t.radiance);
+    return power;
+}
+
+TEST(AreaLightGrouping, TheCornellPatchIsOneLightFacingDown) {
+    const std::vector<AreaLight> lights = findAreaLights(loadScene("cornell-emissive"));
+    ASSERT_EQ(lights.size(), 1u);
+    const AreaLight& patch = lights[0];
+    EXPECT_EQ(patch.triangles.size(), 2u);
+    EXPECT_EQ(patch.approximation, AreaLight::Approximation::None);
+    EXPECT_NEAR(patch.area, 0.13f * 0.105f, 1e-5f);
+    EXPECT_NEAR(patch.normal.y, -1.0f, 1e-5f);
+    EXPECT_NEAR(patch.meanRadiance.r, 293.0f, 1e-3f);
+    // Every triangle is wound to face down, where it emits.
+    for (const EmitterTriangle& t : patch.triangles)
+        EXPECT_LT(glm::cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]).y, 0.0f);
+    EXPECT_TRUE(findAreaLights(loadScene("cornell")).empty()) << "no emissive surface, no area light";
+}
+
+TEST(AreaLightGrouping, ManyTilesMergeIntoPanelsThatKeepTheirPower) {
+    // 256 tiles: 8 lights of 32 tiles (64 triangles) each, over a budget of 16 triangles a light,
+    // so each becomes the rectangle bounding its tiles, as bright in all as its tiles together.
+    const Scene scene = tiledCeiling(16);
+    const std::vector<AreaLight> lights = findAreaLights(scene);
+    ASSERT_EQ(lights.size(), kMaxAreaLights);
+    float power = 0.0f;
+    size_t triangles = 0, sources = 0;
+    for (const AreaLight& light : lights) {
+        EXPECT_EQ(light.approximation, AreaLight::Approximation::BoundingRectangle);
+        EXPECT_EQ(light.triangles.size(), 2u);
+        EXPECT_NEAR(light.normal.y, -1.0f, 1e-5f);
+        power += lightPower(light);
+        triangles += light.triangles.size();
+        sources += light.sourceTriangles;
+    }
+    EXPECT_LE(triangles, kMaxAreaLightTriangles);
+    EXPECT_EQ(sources, 512u);
+    const float tilePower = 0.01f * luminance(glm::vec3(5.0f));
+    EXPECT_NEAR(power, 240.0f * tilePower + 16.0f * 2.0f * tilePower, 1e-3f * power);
+}
+
+TEST(AreaLightGrouping, ACurvedEmitterOverItsBudgetKeepsItsBrightestTrianglesAndItsPower) {
+    // Every other tile turned 30° about its x axis: no group of them is flat, so none can become
+    // one rectangle.
+    Scene scene = tiledCeiling(12);  // 144 tiles, 288 triangles: one light per tile, merged into 8
+    for (size_t tile = 0; tile < 144; ++tile) {
+        if ((tile / 12 + tile % 12) % 2 == 0) continue;
+        for (size_t k = 0; k < 4; ++k) {
+            Vertex& vertex = scene.vertices[4 * tile + k];
+            const float dz = (k == 0 || k == 1) ? -0.05f : 0.05f;
+            vertex.position.y += dz * 0.57735f;  // tan 30°
+            vertex.normal = glm::vec3(0.0f, -0.866f, 0.5f);
+        }
+    }
+    float scenePower = 0.0f;
+    for (size_t t = 0; t < scene.triangleCount(); ++t) {
+        const glm::vec3 a = scene.vertices[scene.indices[3 * t]].position,
+                        b = scene.vertices[scene.indices[3 * t + 1]].position,
+                        c = scene.vertices[scene.indices[3 * t + 2]].position;
+        scenePower += 0.5f * glm::length(glm::cross(b - a, c - a)) *
+                      luminance(scene.materials[scene.triangleMaterials[t]].emission);
+    }
+    float power = 0.0f;
+    size_t triangles = 0;
+    bool someBrightest = false;
+    for (const AreaLight& light : findAreaLights(scene)) {
+        power += lightPower(light);
+        triangles += light.triangles.size();
+        someBrightest |= light.approximation == AreaLight::Approximation::BrightestTriangles;
+    }
+    EXPECT_TRUE(someBrightest);
+    EXPECT_LE(triangles, kMaxAreaLightTriangles);
+    EXPECT_NEAR(power, scenePower, 1e-3f * scenePower);
+}
+
+}  // namespace
+}  // namespace vct
