@@ -36,13 +36,13 @@ spp_for() {
         *:indirect-1bounce) echo 2048 ;;
         cornell-emissive:indirect) echo 1024 ;;  # paths find the lamp by NEE and MIS: less noise
         *:indirect) echo 2048 ;;
-        cornell-emissive:direct) echo 2048 ;;  # the lamp's light is sampled over its area: noisier
+        cornell-emissive:direct | panel-room:direct | tile-room:direct) echo 2048 ;;  # lamps sampled over their area
         *:direct) echo 512 ;;
     esac
 }
 
 scenes=("$@")
-[[ ${#scenes[@]} -gt 0 ]] || scenes=(cornell cornell-emissive cornell-metal cornell-sun sun-room terrain)
+[[ ${#scenes[@]} -gt 0 ]] || scenes=(cornell cornell-emissive cornell-metal cornell-sun sun-room terrain panel-room tile-room)
 mkdir -p "$out"
 for scene in "${scenes[@]}"; do
     for mode in direct indirect; do
