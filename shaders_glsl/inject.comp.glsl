@@ -26,6 +26,7 @@ layout(set = 0, binding = 9, rgba16f) uniform readonly image3D gatheredLight;
 layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
 layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
 layout(set = 0, binding = 12, rgba16f) uniform readonly image3D voxelEmission;
+layout(set = 0, binding = 13) uniform sampler2DArrayShadow areaShadowMaps;
 layout(push_constant) uniform Push { uint addGathered; };
 
 #include "voxel_grid.h"

@@ -23,6 +23,8 @@ layout(set = 0, binding = 14) uniform sampler2DArray sunShadowDepths;
 layout(set = 0, binding = 15) uniform sampler2DArray localShadowDepths;
 layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive texture's colour
 layout(std430, set = 0, binding = 17) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
+layout(set = 0, binding = 18) uniform sampler2DArrayShadow areaShadowMaps;
+layout(set = 0, binding = 19) uniform sampler2DArray areaShadowDepths;
 #define SHADOW_BLOCKER_SEARCH
 
 #include "cone_tracing.glsl"

@@ -1,8 +1,9 @@
 // Shadow-map visibility with 5×5 percentage-closer filtering whose kernel narrows where the
 // occluder is near (contact hardening).
-// Requires: shadowViews[] (ShadowView), sunShadowMaps and localShadowMaps (sampler2DArrayShadow),
-// frame (FrameConstants); with SHADOW_BLOCKER_SEARCH defined, also sunShadowDepths and
-// localShadowDepths (sampler2DArray of the same maps, nearest filtering) for the filtered path;
+// Requires: shadowViews[] (ShadowView), sunShadowMaps, localShadowMaps and areaShadowMaps
+// (sampler2DArrayShadow), frame (FrameConstants); with SHADOW_BLOCKER_SEARCH defined, also
+// sunShadowDepths, localShadowDepths and areaShadowDepths (sampler2DArray of the same maps, nearest
+// filtering) for the filtered path;
 // without it every lookup is one bilinear comparison.
 #ifndef VCT_SHADOWS_GLSL
 #define VCT_SHADOWS_GLSL
@@ -29,9 +30,29 @@ const float MAX_RECEIVER_SLOPE = 5.67f;
 // receiver (a wall standing on a floor) by half.
 const float TAN_LIGHT_ANGULAR_RADIUS = 0.0094f;
 
+// ShadowView.params.x: the array a view's map is a layer of.
+const uint SHADOW_ARRAY_SUN = 0u;
+const uint SHADOW_ARRAY_LOCAL = 1u;
+const uint SHADOW_ARRAY_AREA = 2u;
+
 float sampleShadowMap(uint array, vec4 coordinate) {
-    return array == 0u ? texture(sunShadowMaps, coordinate) : texture(localShadowMaps, coordinate);
+    if (array == SHADOW_ARRAY_SUN) return texture(sunShadowMaps, coordinate);
+    return array == SHADOW_ARRAY_LOCAL ? texture(localShadowMaps, coordinate) : texture(areaShadowMaps, coordinate);
 }
+
+#ifdef SHADOW_BLOCKER_SEARCH
+// The stored depths of the four texels around `coordinate` (uv, layer).
+vec4 gatherShadowDepths(uint array, vec3 coordinate) {
+    if (array == SHADOW_ARRAY_SUN) return textureGather(sunShadowDepths, coordinate, 0);
+    return array == SHADOW_ARRAY_LOCAL ? textureGather(localShadowDepths, coordinate, 0)
+                                       : textureGather(areaShadowDepths, coordinate, 0);
+}
+
+vec2 shadowMapSize(uint array) {
+    if (array == SHADOW_ARRAY_SUN) return vec2(textureSize(sunShadowMaps, 0).xy);
+    return vec2(array == SHADOW_ARRAY_LOCAL ? textureSize(localShadowMaps, 0).xy : textureSize(areaShadowMaps, 0).xy);
+}
+#endif
 
 // The point's shadow-map coordinates: uv, and depth in the map's own [0, 1] range.
 vec3 shadowMapCoordinates(ShadowView view, vec3 position) {
@@ -43,10 +64,13 @@ vec3 shadowMapCoordinates(ShadowView view, vec3 position) {
 #ifdef SHADOW_BLOCKER_SEARCH
 // Soft shadows of an area light from its shadow cube (seen from the light's centre), in two steps.
 // 1. Blocker search (as in percentage-closer soft shadows, Fernando 2005): the texels around the
-//    receiver that hide part of the light give the mean distance Δ of the occluders in front of it.
+//    receiver that hide part of the light give the distances of the occluders in front of it, the
+//    nearest and the mean.
 // 2. Visibility: rays from the receiver to AREA_SHADOW_TAPS points spread over the disc of the
-//    light's area are each tested where they cross that distance Δ, a point in free space, against
-//    the cube: a ray whose point lies behind what the cube saw is blocked. Unlike a filter kernel
+//    light's area are each tested just short of where they cross those two distances, at points in
+//    free space, against the cube: a ray with either point behind what the cube saw is blocked (with
+//    the mean alone, a ray passed an occluder nearer than the mean, and the shadows faded as the
+//    maps grew coarser and the search reached further). Unlike a filter kernel
 //    centred on the receiver this knows which side of the light each ray goes to, so a box standing
 //    on the floor hides the whole light from the floor at its foot (PCSS let in half), and testing
 //    points off the surface, not the receiver's own plane, cannot shadow the receiver itself.
@@ -56,14 +80,15 @@ const float AREA_SHADOW_SEARCH_TEXELS = 48.0f;  // the widest blocker search, in
 
 // For each of four texels at `tapDistance` texels from the receiver's centre, `inFront` of its plane
 // (along the ray to the light), 1 if it hides part of the light from the receiver: it lies beyond
-// the receiver's own surface
-// and inside the cone from the receiver to the light, within r·Δ/(d − Δ) of it at Δ in front (a
-// texel of slack). This keeps a floor from counting as an occluder for the foot of a wall that
-// stands on it, and a surface seen nearly edge on from counting for itself.
+// the receiver's own surface, short of the light's own surface, and inside the cone from the
+// receiver to the light, within r·Δ/(d − Δ) of it at Δ in front (a texel of slack). This keeps a
+// floor from counting as an occluder for the foot of a wall that stands on it, and a surface seen
+// nearly edge on from counting for itself.
 vec4 hidesLight(vec4 inFront, float tapDistance, float ownSurface, float texelWorld, float distanceToLight,
                 float lightRadius) {
     vec4 reach = lightRadius * inFront / max(vec4(distanceToLight) - inFront, vec4(1e-20f)) + texelWorld;
-    return vec4(greaterThan(inFront, vec4(ownSurface))) * vec4(lessThanEqual(vec4(tapDistance * texelWorld), reach));
+    return vec4(greaterThan(inFront, vec4(ownSurface))) * vec4(lessThan(inFront, vec4(0.95f * distanceToLight))) *
+           vec4(lessThanEqual(vec4(tapDistance * texelWorld), reach));
 }
 
 // AREA_SHADOW_TAPS points on a golden-angle spiral over the unit disc: √((i + ½)/n) at i · 137.5°.
@@ -102,31 +127,33 @@ float areaLightShadow(GpuLight light, ShadowView view, vec3 position, vec3 norma
     // Interleaved gradient noise (Jimenez 2014) of the shadow-map texel turns the spiral.
     float turn = 6.2831853f * fract(52.9829189f * fract(dot(floor(centre.xy / texel), vec2(0.06711056f, 0.00583715f))));
     mat2 rotation = mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
-    // A texel of a surface seen at angle θ from its normal spans texelWorld·tanθ in depth: its own
-    // texels lie that far in front of its plane's centre.
-    float cosine = clamp(dot(normal, normalize(eye - position)), 0.1f, 1.0f);
-    float ownSurface = 1.5f * texelWorld * (1.0f + sqrt(1.0f - cosine * cosine) / cosine);
+    float ownSurface = 1.5f * texelWorld;
     // View depths turn into distances along the ray to the light's centre by this factor.
     float alongRay = distanceToLight / max((view.viewProjection * vec4(position, 1.0f)).w, 1e-20f);
 
     float searchRadius = clamp(reachRadius / texelWorld, frame.pcfRadius, AREA_SHADOW_SEARCH_TEXELS);
     float blockerDistance = 0.0f;
+    float nearestBlocker = distanceToLight;
     float blockers = 0.0f;
     for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
         vec2 tap = (rotation * AREA_SHADOW_SPIRAL[i]) * searchRadius;
         vec2 offset = tap * texel;
         vec3 coordinate = vec3(centre.xy + offset, layer);
-        vec4 stored = array == 0u ? textureGather(sunShadowDepths, coordinate, 0)
-                                  : textureGather(localShadowDepths, coordinate, 0);
+        vec4 stored = gatherShadowDepths(array, coordinate);
         float receiverDepth = viewDepth(view, vec4(centre.z + dot(depthGradient, offset))).x;
         vec4 inFront = (vec4(receiverDepth) - viewDepth(view, stored)) * alongRay;
         vec4 hides = hidesLight(inFront, length(tap), ownSurface, texelWorld, distanceToLight, reachRadius);
         blockers += dot(hides, vec4(1.0f));
         blockerDistance += dot(hides, inFront);
+        vec4 nearest = mix(vec4(distanceToLight), inFront, hides);
+        nearestBlocker = min(nearestBlocker, min(min(nearest.x, nearest.y), min(nearest.z, nearest.w)));
     }
     if (blockers == 0.0f) return 1.0f;
-    // Just short of the occluders, where a ray that meets them is still behind them from the light.
-    blockerDistance = max(0.9f * blockerDistance / blockers, ownSurface);
+    // Each ray is tested just short of the nearest occluders and of their mean distance, where a ray
+    // that meets them is still behind them from the light: occluders at several distances (a box
+    // with a wall behind it) are each met where they are.
+    float nearDepth = max(0.9f * nearestBlocker, ownSurface);
+    float meanDepth = max(0.9f * blockerDistance / blockers, ownSurface);
 
     vec3 tangent = perpendicularTo(front);
     vec3 bitangent = cross(front, tangent);
@@ -139,9 +166,10 @@ float areaLightShadow(GpuLight light, ShadowView view, vec3 position, vec3 norma
         vec3 toSample = eye + tangent * onDisc.x + bitangent * onDisc.y - position;
         float sampleDistance = length(toSample);
         float weight = max(dot(toSample, normal), 0.0f) / sampleDistance;
-        vec3 probe = position + toSample * (min(blockerDistance, 0.98f * sampleDistance) / sampleDistance);
-        vec3 coordinate = shadowMapCoordinates(view, probe);
-        lit += weight * sampleShadowMap(array, vec4(coordinate.xy, layer, coordinate.z));
+        vec3 near = shadowMapCoordinates(view, position + toSample * (min(nearDepth, 0.98f * sampleDistance) / sampleDistance));
+        vec3 mean = shadowMapCoordinates(view, position + toSample * (min(meanDepth, 0.98f * sampleDistance) / sampleDistance));
+        lit += weight * min(sampleShadowMap(array, vec4(near.xy, layer, near.z)),
+                            sampleShadowMap(array, vec4(mean.xy, layer, mean.z)));
         total += weight;
     }
     return total > 0.0f ? lit / total : 1.0f;
@@ -177,7 +205,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     return sampleShadowMap(array, vec4(centre.xy, view.params.y, centre.z));
 #else
     if (!filtered) return sampleShadowMap(array, vec4(centre.xy, view.params.y, centre.z));
-    vec2 texel = 1.0f / vec2(array == 0u ? textureSize(sunShadowMaps, 0).xy : textureSize(localShadowMaps, 0).xy);
+    vec2 texel = 1.0f / shadowMapSize(array);
 
     // The receiver plane's depth gradient over the map, dz/d(uv), from two points on the plane.
     vec3 tangent = abs(normal.x) < 0.9f ? normalize(cross(normal, vec3(1.0f, 0.0f, 0.0f)))
@@ -196,15 +224,17 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     vec3 lightAxis = uint(light.radiantIntensity.w) == LIGHT_DIRECTIONAL ? light.direction.xyz
                                                                          : normalize(position - light.positionRange.xyz);
     float texelDepth = abs(shadowMapCoordinates(view, offsetPosition + lightAxis * texelWorld).z - centre.z);
+    // An area light's rays test points off the surface, not the plane; its blocker search needs
+    // the plane as it is, the farther out the more (a slope clamped there lengthened the occluders'
+    // distance, and its shadows faded as its maps grew coarser).
+    if (uint(light.radiantIntensity.w) == LIGHT_AREA)
+        return areaLightShadow(light, view, offsetPosition, normal, centre, depthGradient, texel, texelWorld,
+                               distanceToLight);
     float change = length(depthGradient * texel);
     if (change > MAX_RECEIVER_SLOPE * texelDepth) depthGradient *= MAX_RECEIVER_SLOPE * texelDepth / change;
     // The normal offset keeps the centre tap clear of its own surface's texels (it lifts the point
     // 1.5 texels, more than the one texel a bilinear comparison spans at any slope); the plane
     // carries that margin to the other taps.
-
-    if (uint(light.radiantIntensity.w) == LIGHT_AREA)
-        return areaLightShadow(light, view, offsetPosition, normal, centre, depthGradient, texel, texelWorld,
-                               distanceToLight);
     float radius = frame.pcfRadius;
     // Blockers: texels of the kernel's footprint nearer the light than the receiver's plane there,
     // gathered four at a time over a 3×3 grid of taps. Their mean distance in front of the plane
@@ -216,8 +246,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
             vec2 offset = vec2(x, y) * radius * texel;
             float receiverDepth = centre.z + dot(depthGradient, offset);
             vec3 coordinate = vec3(centre.xy + offset, view.params.y);
-            vec4 stored = array == 0u ? textureGather(sunShadowDepths, coordinate, 0)
-                                      : textureGather(localShadowDepths, coordinate, 0);
+            vec4 stored = gatherShadowDepths(array, coordinate);
             vec4 nearer = vec4(lessThan(stored, vec4(receiverDepth)));
             blockers += dot(nearer, vec4(1.0f));
             blockerDepth += dot(nearer, vec4(receiverDepth) - stored);
@@ -237,8 +266,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
             vec2 offset = vec2(x, y) * (0.5f * radius) * texel;
             float depth = centre.z + dot(depthGradient, offset);
             vec3 coordinate = vec3(centre.xy + offset, view.params.y);
-            vec4 stored = array == 0u ? textureGather(sunShadowDepths, coordinate, 0)
-                                      : textureGather(localShadowDepths, coordinate, 0);
+            vec4 stored = gatherShadowDepths(array, coordinate);
             lit += min(min(stored.x, stored.y), min(stored.z, stored.w)) >= depth ? 1.0f : 0.0f;
         }
     return lit / float((2 * reach + 1) * (2 * reach + 1));

@@ -34,6 +34,7 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
         .buffer(10, volumes.occupiedVoxels.buffer)
         .buffer(11, volumes.occupiedDispatch.buffer)
         .storageImage(12, volumes.emission.view)
+        .sampledImage(13, shadows.areaMaps.view, shadows.compareSampler.sampler)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
     const uint32_t add = addGathered ? 1u : 0u;
     vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);

@@ -131,7 +131,7 @@ void Renderer::setLights(const std::vector<Light>& lights) {
                     shadowLayout_.emitterTriangles.size() * sizeof(glsl::GpuEmitterTriangle));
     // New arrays only when the number of shadow maps changed; otherwise they are redrawn in place.
     if (!shadowPass_ || previous.sunLayers != shadowLayout_.sunLayers ||
-        previous.localLayers != shadowLayout_.localLayers) {
+        previous.localLayers != shadowLayout_.localLayers || previous.areaLayers != shadowLayout_.areaLayers) {
         if (shadowPass_) vkDeviceWaitIdle(context_.device);
         shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_);
     }
@@ -369,7 +369,7 @@ uint64_t Renderer::deviceMemoryBytes() const {
     for (const GpuImage* image : std::initializer_list<const GpuImage*>{
              &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->emissive,
              &gbufferPass_->depth, &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps,
-             &shadowPass_->localMaps})
+             &shadowPass_->localMaps, &shadowPass_->areaMaps})
         bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{

@@ -80,7 +80,8 @@ void checkShadowMaps(const VkPhysicalDeviceLimits& limits, const std::string& de
         const char* option;
         const char* what;
     } maps[] = {{settings.resources.sunShadowMapSize, "--shadow-map", "sun shadow map"},
-                {settings.resources.localShadowMapSize, "--local-shadow-map", "spot and point light shadow map"}};
+                {settings.resources.localShadowMapSize, "--local-shadow-map", "spot and point light shadow map"},
+                {settings.resources.areaShadowMapSize, "--area-shadow-map", "area light shadow map"}};
     for (const auto& map : maps)
         if (map.size > side.value)
             throw Error("a " + std::to_string(map.size) + "² " + map.what + " is larger than " + deviceName + "'s " +
@@ -88,7 +89,7 @@ void checkShadowMaps(const VkPhysicalDeviceLimits& limits, const std::string& de
                         std::to_string(side.value) + " fits");
 
     const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
-    for (const uint32_t layers : {layout.sunLayers, layout.localLayers})
+    for (const uint32_t layers : {layout.sunLayers, layout.localLayers, layout.areaLayers})
         if (layers > limits.maxImageArrayLayers)
             throw Error("scene '" + scene.name + "': its lights need " + std::to_string(layers) +
                         " shadow maps in one array (a point light needs six), more than " + deviceName +
@@ -129,9 +130,11 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
     const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
     const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;
     const uint64_t localSide = layout.localLayers ? settings.resources.localShadowMapSize : 1;
-    estimate.shadowMaps = (std::max(layout.sunLayers, 1u) * sunSide * sunSide +
-                           std::max(layout.localLayers, 1u) * localSide * localSide) *
-                          kShadowTexel;
+    const uint64_t areaSide = layout.areaLayers ? settings.resources.areaShadowMapSize : 1;
+    estimate.shadowMaps =
+        (std::max(layout.sunLayers, 1u) * sunSide * sunSide + std::max(layout.localLayers, 1u) * localSide * localSide +
+         std::max(layout.areaLayers, 1u) * areaSide * areaSide) *
+        kShadowTexel;
 
     const uint64_t samples = uint64_t(settings.image.width) * settings.image.height * settings.image.supersample *
                              settings.image.supersample;

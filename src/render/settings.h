@@ -101,6 +101,9 @@ struct ResourceSettings {
     uint32_t bounces = kConvergedBounces;
     uint32_t sunShadowMapSize = 4096;    // directional lights
     uint32_t localShadowMapSize = 1024;  // each spot light and each cube face of a point light
+    // Each cube face of an area light: their shadows are soft, tested by rays that are spread over
+    // the light, so a coarser map serves (eight lights at 1024² took 200 MB).
+    uint32_t areaShadowMapSize = 512;
     bool operator==(const ResourceSettings&) const = default;
 };
 

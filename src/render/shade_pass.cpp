@@ -57,6 +57,8 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(14, shadows.sunMaps.view, pointSampler.sampler)
             .sampledImage(15, shadows.localMaps.view, pointSampler.sampler)
             .sampledImage(16, gbuffer.emissive.view, pointSampler.sampler)
+            .sampledImage(18, shadows.areaMaps.view, shadows.compareSampler.sampler)
+            .sampledImage(19, shadows.areaMaps.view, pointSampler.sampler)
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.layout);
     });
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

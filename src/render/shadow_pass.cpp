@@ -14,12 +14,12 @@ namespace {
 
 constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
 
-glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, float znear, float zfar, uint32_t layer,
-                                 uint32_t size) {
+glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, float znear, float zfar,
+                                 ShadowArray array, uint32_t layer, uint32_t size) {
     glsl::ShadowView view{};
     view.viewProjection = glm::perspective(fov, 1.0f, znear, zfar) * lookAlong(eye, forward, glm::vec3(0, 1, 0));
     // World size of one texel at distance 1 from the light.
-    view.params = glm::vec4(1.0f, float(layer), 2.0f * std::tan(0.5f * fov) / float(size), 1.0f);
+    view.params = glm::vec4(float(array), float(layer), 2.0f * std::tan(0.5f * fov) / float(size), 1.0f);
     view.depthRange = glm::vec4(znear, zfar, 0.0f, 0.0f);
     return view;
 }
@@ -31,7 +31,6 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
     ShadowLayout layout;
     const glm::vec3 center = sceneBounds.center();
     const float radius = std::max(0.5f * glm::length(sceneBounds.extent()), 1e-6f);
-    const uint32_t localSize = settings.resources.localShadowMapSize;
     // A perspective view's depth range: to the scene's farthest corner, near relative to it only
     // (itself at least 1e-5), so a scene scaled by a power of two gets the same depth mapping and
     // the same shadows.
@@ -45,15 +44,17 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
         }
         return std::max(farthest * 1.01f, 1e-5f);
     };
-    auto addCube = [&](const glm::vec3& eye) {
+    auto addCube = [&](const glm::vec3& eye, ShadowArray array) {
         const float zfar = farthestCorner(eye);
+        uint32_t& layers = array == ShadowArray::Area ? layout.areaLayers : layout.localLayers;
+        const uint32_t size =
+            array == ShadowArray::Area ? settings.resources.areaShadowMapSize : settings.resources.localShadowMapSize;
         // Faces a little wider than 90° so the PCF kernel near a face edge stays inside the face.
-        const float margin = 1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(localSize);
+        const float margin = 1.0f + 2.0f * (settings.shading.pcfRadius + 1.0f) / float(size);
         const float fov = 2.0f * std::atan(margin);
         const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
         for (const glm::vec3& axis : axes)
-            layout.views.push_back(
-                perspectiveView(eye, axis, fov, zfar * 1e-4f, zfar, layout.localLayers++, localSize));
+            layout.views.push_back(perspectiveView(eye, axis, fov, zfar * 1e-4f, zfar, array, layers++, size));
     };
     for (const Light& light : lights) {
         glsl::GpuLight gpu{};
@@ -76,10 +77,11 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
             const float zfar = farthestCorner(light.position);
             const float fov = std::min(2.0f * light.outerConeAngle * 1.05f + 0.02f, glm::radians(170.0f));
             layout.views.push_back(perspectiveView(light.position, light.direction, fov, zfar * 1e-4f, zfar,
-                                                   layout.localLayers++, localSize));
+                                                   ShadowArray::Local, layout.localLayers++,
+                                                   settings.resources.localShadowMapSize));
             gpu.spotShadow.w = 1.0f;
         } else {
-            addCube(light.position);
+            addCube(light.position, ShadowArray::Local);
             gpu.spotShadow.w = 6.0f;
         }
         layout.lights.push_back(gpu);
@@ -93,7 +95,7 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
         gpu.direction = glm::vec4(light.normal, light.area);
         gpu.spotShadow = glm::vec4(float(layout.emitterTriangles.size()), float(light.triangles.size()),
                                    float(layout.views.size()), 6.0f);
-        addCube(eye);
+        addCube(eye, ShadowArray::Area);
         for (const EmitterTriangle& triangle : light.triangles)
             layout.emitterTriangles.push_back({glm::vec4(triangle.corners[0], triangle.radiance.r),
                                                glm::vec4(triangle.corners[1], triangle.radiance.g),
@@ -117,6 +119,7 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
     };
     sunMaps = makeArray(layout.sunLayers, settings.resources.sunShadowMapSize, "sun shadow maps");
     localMaps = makeArray(layout.localLayers, settings.resources.localShadowMapSize, "local shadow maps");
+    areaMaps = makeArray(layout.areaLayers, settings.resources.areaShadowMapSize, "area light shadow maps");
 
     VkSamplerCreateInfo samplerInfo = linearClampSampler();
     samplerInfo.compareEnable = VK_TRUE;
@@ -133,7 +136,7 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
 void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout,
                         VkBuffer viewsBuffer) {
     const VkImageLayout previous = initialized ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
-    for (GpuImage* maps : {&sunMaps, &localMaps})
+    for (GpuImage* maps : {&sunMaps, &localMaps, &areaMaps})
         imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, previous,
                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
@@ -173,12 +176,14 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     };
     for (size_t i = 0; i < layout.views.size(); ++i) {
         const glsl::ShadowView& view = layout.views[i];
-        renderLayer(view.params.x < 0.5f ? sunMaps : localMaps, uint32_t(view.params.y), int(i));
+        GpuImage* arrays[3] = {&sunMaps, &localMaps, &areaMaps};
+        renderLayer(*arrays[uint32_t(view.params.x)], uint32_t(view.params.y), int(i));
     }
     if (layout.sunLayers == 0) renderLayer(sunMaps, 0, -1);
     if (layout.localLayers == 0) renderLayer(localMaps, 0, -1);
+    if (layout.areaLayers == 0) renderLayer(areaMaps, 0, -1);
 
-    for (GpuImage* maps : {&sunMaps, &localMaps})
+    for (GpuImage* maps : {&sunMaps, &localMaps, &areaMaps})
         imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,

@@ -23,7 +23,11 @@ struct ShadowLayout {
     std::vector<glsl::GpuEmitterTriangle> emitterTriangles;
     uint32_t sunLayers = 0;
     uint32_t localLayers = 0;
+    uint32_t areaLayers = 0;
 };
+
+// ShadowView::params.x: which array a view's map is a layer of.
+enum class ShadowArray : uint32_t { Sun = 0, Local = 1, Area = 2 };
 
 // The buffers that describe a ShadowLayout to the shaders.
 struct LightBuffers {
@@ -44,6 +48,7 @@ struct ShadowPass {
     // Both arrays exist even when unused (1×1) so the shading pass can always bind them.
     GpuImage sunMaps;
     GpuImage localMaps;
+    GpuImage areaMaps;
     Sampler compareSampler;
     Pipeline pipeline;
     bool initialized = false;  // layouts are valid for sampling

@@ -155,6 +155,7 @@ static void resolutionSection(ViewerState& state) {
     powerOfTwoCombo("voxels", settings.resources.voxelResolution, 32, 512);
     powerOfTwoCombo("sun shadow map", settings.resources.sunShadowMapSize, 256, 8192);
     powerOfTwoCombo("local shadow map", settings.resources.localShadowMapSize, 128, 4096);
+    powerOfTwoCombo("area shadow map", settings.resources.areaShadowMapSize, 128, 4096);
     int supersample = int(settings.image.supersample);
     ImGui::SliderInt("supersample", &supersample, 1, 4);
     settings.image.supersample = uint32_t(supersample);

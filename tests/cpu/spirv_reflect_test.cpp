@@ -213,6 +213,7 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 12, kStorageImage, kCompute));
+    expected.push_back(binding(0, 13, kCombined, kCompute));  // the area lights' shadow maps
     expectBindings(inject.bindings, expected);
     EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint addGathered
     EXPECT_EQ(inject.localSize[0], 64u);
@@ -248,6 +249,8 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     expected.push_back(binding(0, 15, kCombined, kFragment));       // the local shadow maps' depths
     expected.push_back(binding(0, 16, kCombined, kFragment));       // the G-buffer's emissive texture colour
     expected.push_back(binding(0, 17, kStorageBuffer, kFragment));  // the area lights' triangles
+    expected.push_back(binding(0, 18, kCombined, kFragment));       // their shadow maps
+    expected.push_back(binding(0, 19, kCombined, kFragment));       // ... and their depths
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }
