@@ -65,7 +65,8 @@ vec3 directLight(SurfacePoint surface, uint flags) {
     for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
         if (uint(light.radiantIntensity.w) == LIGHT_AREA) {
-            if ((flags & USE_AREA_LIGHTS) != 0u) radiance += areaLightReflected(light, surface, flags);
+            if (AREA_LIGHTS_COMPILED && (flags & USE_AREA_LIGHTS) != 0u)
+                radiance += areaLightReflected(light, surface, flags);
             continue;
         }
         vec3 toLight;

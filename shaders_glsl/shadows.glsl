@@ -30,6 +30,12 @@ const float MAX_RECEIVER_SLOPE = 5.67f;
 // receiver (a wall standing on a floor) by half.
 const float TAN_LIGHT_ANGULAR_RADIUS = 0.0094f;
 
+// A shader may compile the area lights' code out by defining AREA_LIGHTS_COMPILED false (or a
+// specialization constant); by default it is in.
+#ifndef AREA_LIGHTS_COMPILED
+#define AREA_LIGHTS_COMPILED true
+#endif
+
 // ShadowView.params.x: the array a view's map is a layer of.
 const uint SHADOW_ARRAY_SUN = 0u;
 const uint SHADOW_ARRAY_LOCAL = 1u;
@@ -37,20 +43,22 @@ const uint SHADOW_ARRAY_AREA = 2u;
 
 float sampleShadowMap(uint array, vec4 coordinate) {
     if (array == SHADOW_ARRAY_SUN) return texture(sunShadowMaps, coordinate);
-    return array == SHADOW_ARRAY_LOCAL ? texture(localShadowMaps, coordinate) : texture(areaShadowMaps, coordinate);
+    if (!AREA_LIGHTS_COMPILED || array == SHADOW_ARRAY_LOCAL) return texture(localShadowMaps, coordinate);
+    return texture(areaShadowMaps, coordinate);
 }
 
 #ifdef SHADOW_BLOCKER_SEARCH
 // The stored depths of the four texels around `coordinate` (uv, layer).
 vec4 gatherShadowDepths(uint array, vec3 coordinate) {
     if (array == SHADOW_ARRAY_SUN) return textureGather(sunShadowDepths, coordinate, 0);
-    return array == SHADOW_ARRAY_LOCAL ? textureGather(localShadowDepths, coordinate, 0)
-                                       : textureGather(areaShadowDepths, coordinate, 0);
+    if (!AREA_LIGHTS_COMPILED || array == SHADOW_ARRAY_LOCAL) return textureGather(localShadowDepths, coordinate, 0);
+    return textureGather(areaShadowDepths, coordinate, 0);
 }
 
 vec2 shadowMapSize(uint array) {
     if (array == SHADOW_ARRAY_SUN) return vec2(textureSize(sunShadowMaps, 0).xy);
-    return vec2(array == SHADOW_ARRAY_LOCAL ? textureSize(localShadowMaps, 0).xy : textureSize(areaShadowMaps, 0).xy);
+    if (!AREA_LIGHTS_COMPILED || array == SHADOW_ARRAY_LOCAL) return vec2(textureSize(localShadowMaps, 0).xy);
+    return vec2(textureSize(areaShadowMaps, 0).xy);
 }
 #endif
 
@@ -227,7 +235,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     // An area light's rays test points off the surface, not the plane; its blocker search needs
     // the plane as it is, the farther out the more (a slope clamped there lengthened the occluders'
     // distance, and its shadows faded as its maps grew coarser).
-    if (uint(light.radiantIntensity.w) == LIGHT_AREA)
+    if (AREA_LIGHTS_COMPILED && uint(light.radiantIntensity.w) == LIGHT_AREA)
         return areaLightShadow(light, view, offsetPosition, normal, centre, depthGradient, texel, texelWorld,
                                distanceToLight);
     float change = length(depthGradient * texel);

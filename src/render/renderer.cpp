@@ -282,6 +282,7 @@ FrameStats Renderer::renderFrame() {
                 .debugViews = settings_.shading.debugView != DebugView::None,
                 .tracesDiffuseCones = !reducedDiffuse,
                 .tracesSpecularCone = anySpecularMaterial_ && effectiveComponents(settings_.shading).indirectSpecular,
+                .areaLights = !areaLights_.empty() && settings_.shading.components.areaLights,
             };
             const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightBuffers(),
                                      reducedDiffuse ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE, variant};

@@ -22,7 +22,8 @@ const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
     desc.vertexShader = "fullscreen.vert";
     desc.fragmentShader = "shade.frag";
     desc.colorFormats = {radiance.desc.format};
-    desc.fragmentSpecialization = {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone};
+    desc.fragmentSpecialization = {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone,
+                                   variant.areaLights};
     slot = createGraphicsPipeline(context_, desc);
     return slot;
 }

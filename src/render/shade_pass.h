@@ -18,8 +18,10 @@ struct ShadeVariant {
     bool debugViews = false;
     bool tracesDiffuseCones = true;   // false: reads ShadeInputs::reducedDiffuse instead
     bool tracesSpecularCone = false;  // some material reflects specularly and the component is on
+    bool areaLights = false;          // the scene has area lights and the component is on
     uint32_t index() const {
-        return (debugViews ? 1u : 0u) | (tracesDiffuseCones ? 2u : 0u) | (tracesSpecularCone ? 4u : 0u);
+        return (debugViews ? 1u : 0u) | (tracesDiffuseCones ? 2u : 0u) | (tracesSpecularCone ? 4u : 0u) |
+               (areaLights ? 8u : 0u);
     }
 };
 
@@ -45,7 +47,7 @@ struct ShadePass {
 private:
     // Built the first time a frame asks for its variant.
     const Pipeline& pipeline(const ShadeVariant& variant);
-    std::array<Pipeline, 8> pipelines_;
+    std::array<Pipeline, 16> pipelines_;
     GpuContext& context_;
 };
 

@@ -104,6 +104,23 @@ glm::vec3 pixelRay(const Camera& camera, uint32_t x, uint32_t y, uint32_t size) 
     return glm::normalize(forward + right * (ndcX * tanHalf) - up * (ndcY * tanHalf));
 }
 
+// Calls visit(x, y, point) for each pixel of a size² image from `camera` that sees the floor (away
+// from its edges) at `point`; returns how many.
+template <typename Visit>
+int forEachFloorPixel(const Camera& camera, uint32_t size, Visit visit) {
+    int count = 0;
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) {
+            const glm::vec3 direction = pixelRay(camera, x, y, size);
+            if (direction.y >= 0.0f) continue;
+            const glm::vec3 point = camera.position + direction * (-camera.position.y / direction.y);
+            if (std::abs(point.x) > 3.9f || std::abs(point.z) > 3.9f) continue;
+            visit(x, y, point);
+            ++count;
+        }
+    return count;
+}
+
 class AreaLights : public GpuTest {};
 
 TEST_F(AreaLights, ALampLightsTheFloorBelowAsItsIntegralSays) {
@@ -112,18 +129,10 @@ TEST_F(AreaLights, ALampLightsTheFloorBelowAsItsIntegralSays) {
     Renderer renderer(gpu(), scene, directSettings(size));
     renderer.renderFrame();
     const Image image = renderer.readImage();
-    const Camera& camera = scene.cameras[0];
-    int compared = 0;
-    for (uint32_t y = 0; y < size; ++y)
-        for (uint32_t x = 0; x < size; ++x) {
-            const glm::vec3 direction = pixelRay(camera, x, y, size);
-            if (direction.y >= 0.0f) continue;
-            const glm::vec3 point = camera.position + direction * (-camera.position.y / direction.y);
-            if (std::abs(point.x) > 3.9f || std::abs(point.z) > 3.9f) continue;
-            const float expected = integratedIrradiance(point) * kFloorAlbedo / kPi;
-            EXPECT_NEAR(image.pixel(x, y)[0], expected, 0.01f * expected + 1e-4f) << "pixel " << x << "," << y;
-            ++compared;
-        }
+    const int compared = forEachFloorPixel(scene.cameras[0], size, [&](uint32_t x, uint32_t y, glm::vec3 point) {
+        const float expected = integratedIrradiance(point) * kFloorAlbedo / kPi;
+        EXPECT_NEAR(image.pixel(x, y)[0], expected, 0.01f * expected + 1e-4f) << "pixel " << x << "," << y;
+    });
     EXPECT_GT(compared, 400);
 }
 
@@ -154,23 +163,17 @@ TEST_F(AreaLights, ABoxCastsTheSoftShadowThePathTracerSees) {
     const Image truth = pt::render(tracer, truthSettings).image;
     // Floor pixels in the penumbra: the truth between a fifth and four fifths of the light it would
     // get unshadowed (numerically integrated, as above).
-    const Camera& camera = scene.cameras[0];
     int penumbra = 0, softHere = 0;
     double squaredError = 0.0, squaredTruth = 0.0;
-    for (uint32_t y = 0; y < size; ++y)
-        for (uint32_t x = 0; x < size; ++x) {
-            const glm::vec3 direction = pixelRay(camera, x, y, size);
-            if (direction.y >= 0.0f) continue;
-            const glm::vec3 point = camera.position + direction * (-camera.position.y / direction.y);
-            if (std::abs(point.x) > 3.9f || std::abs(point.z) > 3.9f) continue;
-            const float unshadowed = integratedIrradiance(point) * kFloorAlbedo / kPi;
-            const float expected = truth.pixel(x, y)[0], actual = image.pixel(x, y)[0];
-            if (expected < 0.2f * unshadowed || expected > 0.8f * unshadowed) continue;
-            ++penumbra;
-            if (actual > 0.05f * unshadowed && actual < 0.95f * unshadowed) ++softHere;
-            squaredError += double(actual - expected) * double(actual - expected);
-            squaredTruth += double(expected) * double(expected);
-        }
+    forEachFloorPixel(scene.cameras[0], size, [&](uint32_t x, uint32_t y, glm::vec3 point) {
+        const float unshadowed = integratedIrradiance(point) * kFloorAlbedo / kPi;
+        const float expected = truth.pixel(x, y)[0], actual = image.pixel(x, y)[0];
+        if (expected < 0.2f * unshadowed || expected > 0.8f * unshadowed) return;
+        ++penumbra;
+        if (actual > 0.05f * unshadowed && actual < 0.95f * unshadowed) ++softHere;
+        squaredError += double(actual - expected) * double(actual - expected);
+        squaredTruth += double(expected) * double(expected);
+    });
     const double relativeError = std::sqrt(squaredError / squaredTruth);
     std::printf("[ area light ] penumbra: %d pixels, %d of them soft here too, RMS error %.3f of the truth\n", penumbra,
                 softHere, relativeError);
