@@ -21,21 +21,21 @@ SHARED_FN float edgeIntegral(vec3 a, vec3 b, vec3 n) {
     return s > 1e-12f ? atan(s, dot(ua, ub)) / s * dot(c, n) : 0.0f;
 }
 
+// Where the edge a → b crosses the horizon plane (only meaningful when it does).
+SHARED_FN vec3 horizonCrossing(vec3 a, vec3 b, vec3 n) {
+    float da = dot(a, n);
+    float db = dot(b, n);
+    return a + (b - a) * (da / (da - db));
+}
+
 // The edge a → b clipped to the half-space n·v ≥ 0 (where the point can see).
 SHARED_FN float clippedEdgeIntegral(vec3 a, vec3 b, vec3 n) {
     float da = dot(a, n);
     float db = dot(b, n);
     if (da >= 0.0f && db >= 0.0f) return edgeIntegral(a, b, n);
     if (da < 0.0f && db < 0.0f) return 0.0f;
-    vec3 crossing = a + (b - a) * (da / (da - db));
+    vec3 crossing = horizonCrossing(a, b, n);
     return da >= 0.0f ? edgeIntegral(a, crossing, n) : edgeIntegral(crossing, b, n);
-}
-
-// Where the edge a → b crosses the horizon plane (only meaningful when it does).
-SHARED_FN vec3 horizonCrossing(vec3 a, vec3 b, vec3 n) {
-    float da = dot(a, n);
-    float db = dot(b, n);
-    return a + (b - a) * (da / (da - db));
 }
 
 // Irradiance per unit radiance at a point with unit normal n from the triangle v0 v1 v2 (corners

@@ -216,8 +216,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanc
     vec2 texel = 1.0f / shadowMapSize(array);
 
     // The receiver plane's depth gradient over the map, dz/d(uv), from two points on the plane.
-    vec3 tangent = abs(normal.x) < 0.9f ? normalize(cross(normal, vec3(1.0f, 0.0f, 0.0f)))
-                                        : normalize(cross(normal, vec3(0.0f, 1.0f, 0.0f)));
+    vec3 tangent = perpendicularTo(normal);
     vec3 bitangent = cross(normal, tangent);
     vec3 alongTangent = shadowMapCoordinates(view, offsetPosition + tangent * texelWorld) - centre;
     vec3 alongBitangent = shadowMapCoordinates(view, offsetPosition + bitangent * texelWorld) - centre;

@@ -23,7 +23,9 @@ glm::vec3 meanLinearColor(const Texture& texture) {
 }
 
 glm::vec3 voxelEmission(const Scene& scene, const Material& material) {
-    if (material.emissiveTexture < 0 || size_t(material.emissiveTexture) >= scene.textures.size())
+    // Without emission the texture's mean (a pass over every texel) would only be multiplied by zero.
+    if (material.emissiveTexture < 0 || size_t(material.emissiveTexture) >= scene.textures.size() ||
+        material.emission == glm::vec3(0.0f))
         return material.emission;
     return material.emission * meanLinearColor(scene.textures[size_t(material.emissiveTexture)]);
 }
