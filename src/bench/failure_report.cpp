@@ -36,7 +36,7 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     FailureModeReport report;
     report.setting = settingLabel(settings);
 
-    // The two rooms span 2 m along x, so the fitted grid's voxel is 2 m / (resolution − 2).
+    // The fitted grid gives the leak measurement its voxel size (the two rooms span 2 m along x).
     const float voxel =
         fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.resources.voxelResolution).originVoxelSize.w;
     for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})

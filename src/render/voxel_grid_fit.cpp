@@ -14,8 +14,13 @@ glsl::VoxelGridParams fitVoxelGrid(const Bounds& sceneBounds, uint32_t resolutio
     const glm::vec3 extent = sceneBounds.extent();
     float side = std::max({extent.x, extent.y, extent.z});
     if (!(side > 0.0f)) side = 1.0f;
-    // One voxel of margin on each side: side' = side · N / (N − 2).
-    side *= float(resolution) / float(resolution - 2);
+    // A margin on each side of 1/64 of the grid (one voxel below 128³): walls then sit the same
+    // distance inside the grid's edge at every resolution, and a coarse cone sample near the edge,
+    // which the filter blends with the empty border, sees them alike. With one voxel of margin at
+    // every resolution the Cornell box's first bounce fell by 4 % from 128³ to 256³ (1.040 -> 0.998
+    // of the path tracer's); now 1.037 -> 1.017. side' = side · N / (N − 2·margin).
+    const float margin = float(std::max(resolution / 64u, 1u));
+    side *= float(resolution) / (float(resolution) - 2.0f * margin);
     glsl::VoxelGridParams grid{};
     const float voxelSize = side / float(resolution);
     grid.originVoxelSize = glm::vec4(sceneBounds.center() - glm::vec3(0.5f * side), voxelSize);

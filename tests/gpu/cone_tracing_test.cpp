@@ -87,7 +87,7 @@ protected:
         frame.grid = grid;
         frame.coneTanHalfAperture = std::tan(glm::radians(30.0f));
         frame.coneStep = coneStep;
-        frame.coneMaxDistance = 2.0f * kResolution;
+        frame.coneMaxDistance = coneMaxDistance;
         frame.coneStartOffset = 1.0f;
         frame.aoFalloff = aoFalloff;
         frame.coneStopOpacity = stopOpacity;
@@ -130,6 +130,7 @@ protected:
     std::vector<glm::vec4> normals;  // per voxel: mean normal (xyz), as the voxelizer writes it
     glsl::VoxelGridParams grid{};
     float coneStep = 0.5f;
+    float coneMaxDistance = 2.0f * kResolution;  // voxels
     float stopOpacity = 0.95f;
     float aoFalloff = 0.0f;
     bool skipEmptySpace = true;
@@ -303,6 +304,30 @@ TEST_F(ConeTracing, SkippingEmptySpaceChangesNothing) {
         EXPECT_GT(marched[i].a, 0.0f) << "probe " << i << " should reach the block";
         for (int c = 0; c < 4; ++c) EXPECT_NEAR(skipped[i][c], marched[i][c], 0.05f * marched[i][c] + 1e-4f);
     }
+}
+
+// A wall at the cone's maximum distance is met, wherever the cone's growing steps fall: the last
+// step lands on the maximum distance. (A step from short of it that went past ended the march
+// unsampled: a cone from the Cornell floor stopped 40 voxels below the ceiling at 256³.)
+TEST_F(ConeTracing, AConeMeetsAWallAtItsMaximumDistance) {
+    for (int z = 0; z < int(kResolution); ++z)
+        for (int x = 0; x < int(kResolution); ++x)
+            for (int y = 60; y < 62; ++y) voxel(x, y, z) = glm::vec4(1, 1, 1, 1);
+    buildVolume();
+    // From y = 4 the wall's near face is 56 voxels away; a 0.3 cone steps ~8 voxels there.
+    const std::vector<glm::vec4> results = [&] {
+        std::vector<glm::vec4> all;
+        for (float reach = 56.0f; reach <= 58.0f; reach += 0.25f) {
+            coneMaxDistance = reach;
+            const std::vector<glm::vec4> one = trace({{glm::vec4(32, 4, 32, 0), glm::vec4(0, 1, 0, 0.3f)}});
+            all.push_back(one[0]);
+        }
+        return all;
+    }();
+    // Measured: 0.80-0.82 with the last step on the maximum distance; 0.70 at every reach when
+    // the march stopped at the sample before it (46.6 voxels out, its footprint grazing the wall).
+    for (size_t i = 0; i < results.size(); ++i)
+        EXPECT_GT(results[i].a, 0.75f) << "maximum distance " << 56.0f + 0.25f * float(i) << ": the wall was missed";
 }
 
 }  // namespace
