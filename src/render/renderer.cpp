@@ -90,7 +90,8 @@ void Renderer::setGeometry(const Scene& scene) {
     voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
     resize(settings_.image);  // the G-buffer pipeline depends on the scene's textures
     stale_.voxels = true;
-    if (shadowPass_) setLights(lights_);  // shadow views are fitted to the scene's bounds
+    staleShadowArrays_ = kAllShadowArrays;  // every shadow map shows the old geometry
+    if (shadowPass_) setLights(lights_);    // shadow views are fitted to the scene's bounds
 }
 
 void Renderer::resize(const ImageSettings& image) {
@@ -135,6 +136,9 @@ void Renderer::setLights(const std::vector<Light>& lights) {
         if (shadowPass_) vkDeviceWaitIdle(context_.device);
         shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_);
     }
+    // Only the maps whose views moved are redrawn: moving the sun in tile-room redrew its 48 lamp
+    // cube faces every frame.
+    staleShadowArrays_ |= changedShadowArrays(previous, shadowLayout_);
     // The brightest emitter stands in for the scene's materials in the storage scale.
     Scene emitters;
     Material brightest;
@@ -218,8 +222,10 @@ FrameStats Renderer::renderFrame() {
     // The voxelizer's count of occupied voxels sizes the progressive slices: read between submissions.
     if (plan.runs(Pass::Shadow) || plan.runs(Pass::Voxelize))
         submit([&](VkCommandBuffer commands) {
-            run(commands, Pass::Shadow,
-                [&] { shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer); });
+            run(commands, Pass::Shadow, [&] {
+                shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, staleShadowArrays_);
+                staleShadowArrays_ = 0;
+            });
             run(commands, Pass::Voxelize, [&] {
                 voxelizePass_->record(commands, *sceneGpu_, *volumes_);
                 recordOccupiedCount(commands);

@@ -100,6 +100,7 @@ private:
     std::vector<Light> lights_;
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
+    ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass
     float brightestEmission_ = 0.0f;
     bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter
     float radianceScale_ = 1.0f;

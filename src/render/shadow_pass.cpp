@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -133,14 +134,40 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
     pipeline = createGraphicsPipeline(context, desc);
 }
 
+ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after) {
+    const uint32_t layers[kShadowArrayCount][2] = {{before.sunLayers, after.sunLayers},
+                                                   {before.localLayers, after.localLayers},
+                                                   {before.areaLayers, after.areaLayers}};
+    ShadowArraySet changed = 0;
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array)
+        if (layers[array][0] != layers[array][1]) changed |= 1u << array;
+    auto viewsOf = [](const ShadowLayout& layout, uint32_t array) {
+        std::vector<glsl::ShadowView> views;
+        for (const glsl::ShadowView& view : layout.views)
+            if (uint32_t(view.params.x) == array) views.push_back(view);
+        return views;
+    };
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
+        const std::vector<glsl::ShadowView> a = viewsOf(before, array), b = viewsOf(after, array);
+        if (a.size() != b.size() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glsl::ShadowView)) != 0)
+            changed |= 1u << array;
+    }
+    return changed;
+}
+
 void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout,
-                        VkBuffer viewsBuffer) {
-    const VkImageLayout previous = initialized ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
-    for (GpuImage* maps : {&sunMaps, &localMaps, &areaMaps})
-        imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, previous,
+                        VkBuffer viewsBuffer, ShadowArraySet redraw) {
+    GpuImage* arrays[kShadowArrayCount] = {&sunMaps, &localMaps, &areaMaps};
+    redraw |= kAllShadowArrays & ~drawn;  // a new array has no maps yet
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
+        if ((redraw & (1u << array)) == 0) continue;
+        const VkImageLayout previous =
+            (drawn & (1u << array)) != 0 ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+        imageBarrier(commands, arrays[array]->image, VK_IMAGE_ASPECT_DEPTH_BIT, previous,
                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    }
 
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
     DescriptorPush()
@@ -176,20 +203,22 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     };
     for (size_t i = 0; i < layout.views.size(); ++i) {
         const glsl::ShadowView& view = layout.views[i];
-        GpuImage* arrays[3] = {&sunMaps, &localMaps, &areaMaps};
-        renderLayer(*arrays[uint32_t(view.params.x)], uint32_t(view.params.y), int(i));
+        const uint32_t array = uint32_t(view.params.x);
+        if ((redraw & (1u << array)) != 0) renderLayer(*arrays[array], uint32_t(view.params.y), int(i));
     }
-    if (layout.sunLayers == 0) renderLayer(sunMaps, 0, -1);
-    if (layout.localLayers == 0) renderLayer(localMaps, 0, -1);
-    if (layout.areaLayers == 0) renderLayer(areaMaps, 0, -1);
+    const uint32_t layers[kShadowArrayCount] = {layout.sunLayers, layout.localLayers, layout.areaLayers};
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array)
+        if ((redraw & (1u << array)) != 0 && layers[array] == 0) renderLayer(*arrays[array], 0, -1);
 
-    for (GpuImage* maps : {&sunMaps, &localMaps, &areaMaps})
-        imageBarrier(commands, maps->image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
+        if ((redraw & (1u << array)) == 0) continue;
+        imageBarrier(commands, arrays[array]->image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    initialized = true;
+    }
+    drawn |= redraw;
 }
 
 }  // namespace vct

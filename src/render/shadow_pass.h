@@ -28,6 +28,16 @@ struct ShadowLayout {
 
 // ShadowView::params.x: which array a view's map is a layer of.
 enum class ShadowArray : uint32_t { Sun = 0, Local = 1, Area = 2 };
+inline constexpr uint32_t kShadowArrayCount = 3;
+
+// A set of shadow arrays, one bit per ShadowArray.
+using ShadowArraySet = uint32_t;
+inline constexpr ShadowArraySet shadowArrayBit(ShadowArray array) { return 1u << uint32_t(array); }
+inline constexpr ShadowArraySet kAllShadowArrays = (1u << kShadowArrayCount) - 1u;
+
+// The arrays whose views differ between two layouts: those must be redrawn. Area lights' views
+// depend on the geometry alone, so moving the sun leaves their cubes as they are.
+ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after);
 
 // The buffers that describe a ShadowLayout to the shaders.
 struct LightBuffers {
@@ -42,8 +52,10 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
 struct ShadowPass {
     ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings);
 
-    // Renders every view into its layer and leaves both arrays ready for sampling.
-    void record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout, VkBuffer viewsBuffer);
+    // Renders the views of the arrays in `redraw` (and of any never drawn) into their layers, and
+    // leaves those arrays ready for sampling; the others keep their maps.
+    void record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout, VkBuffer viewsBuffer,
+                ShadowArraySet redraw);
 
     // Both arrays exist even when unused (1×1) so the shading pass can always bind them.
     GpuImage sunMaps;
@@ -51,7 +63,7 @@ struct ShadowPass {
     GpuImage areaMaps;
     Sampler compareSampler;
     Pipeline pipeline;
-    bool initialized = false;  // layouts are valid for sampling
+    ShadowArraySet drawn = 0;  // arrays whose layouts are valid for sampling
 
 private:
     GpuContext& context_;
