@@ -41,6 +41,24 @@ double jsonNumber(const std::string& path, const std::string& key) {
 
 }  // namespace
 
+// The lights as they are on even frames, and on odd ones with the first one moved a little: 1 mm
+// for a point or spot light, 0.1° for a sun. Its shadow maps are then redrawn, as in the viewer
+// while the user steers it (re-setting the same lights redraws none). Area lights move only with
+// the geometry.
+std::vector<Light> nudgedOnOddFrames(std::vector<Light> lights, uint32_t frame) {
+    if (lights.empty() || frame % 2 == 0) return lights;
+    Light& light = lights.front();
+    if (light.type == LightType::Directional) {
+        const float angle = 0.00175f;
+        const glm::vec3 d = light.direction;
+        light.direction = glm::vec3(std::cos(angle) * d.x + std::sin(angle) * d.z, d.y,
+                                    -std::sin(angle) * d.x + std::cos(angle) * d.z);
+    } else {
+        light.position.x += 0.001f;
+    }
+    return lights;
+}
+
 FrameTiming medianTiming(const std::vector<FrameStats>& frames) {
     FrameTiming timing;
     std::vector<double> gpu, cpu;
@@ -127,11 +145,16 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
         // Light changes first: the first one also re-lights the voxels with this setting's cones
         // (a second bounce gathers with them), so the static frames after it show this setting.
         std::vector<FrameStats> frames;
+        const std::vector<Light> steady = renderer->lights();
         for (uint32_t i = 0; i < options.frames; ++i) {
-            renderer->setLights(renderer->lights());
+            renderer->setLights(nudgedOnOddFrames(steady, i));
             frames.push_back(renderer->renderFrame());
         }
         m.lightChangeFrame = medianTiming(frames);
+        if (options.frames % 2 == 0) {  // the last change left the light moved: the images need it back
+            renderer->setLights(steady);
+            renderer->renderFrame();
+        }
         m.bounces = frames.back().bounces;
         m.bouncesConverged = frames.back().bouncesConverged;
 
@@ -166,7 +189,7 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
             renderer->setShading(moving);
             frames.clear();
             for (uint32_t i = 0; i < options.frames; ++i) {
-                renderer->setLights(renderer->lights());
+                renderer->setLights(nudgedOnOddFrames(steady, i + 1));  // the light moves every frame
                 frames.push_back(renderer->renderFrame());
             }
             m.lightMovingFrame = medianTiming(frames);

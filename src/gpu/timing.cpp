@@ -39,8 +39,12 @@ std::vector<PassTime> GpuTimer::results() {
     VK_CHECK(vkGetQueryPoolResults(context_.device, pool_, 0, uint32_t(ticks.size()), ticks.size() * sizeof(uint64_t),
                                    ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     const double nanosecondsPerTick = context_.properties.limits.timestampPeriod;
-    for (size_t i = 0; i < names_.size(); ++i)
-        times.push_back({names_[i], double(ticks[2 * i + 1] - ticks[2 * i]) * nanosecondsPerTick * 1e-6});
+    // A pass that recorded no work (a shadow pass with no stale map) can read its end before its
+    // start on lavapipe: zero, not an unsigned wrap to 10^13 ms.
+    for (size_t i = 0; i < names_.size(); ++i) {
+        const uint64_t ticksTaken = ticks[2 * i + 1] > ticks[2 * i] ? ticks[2 * i + 1] - ticks[2 * i] : 0;
+        times.push_back({names_[i], double(ticksTaken) * nanosecondsPerTick * 1e-6});
+    }
     return times;
 }
 
