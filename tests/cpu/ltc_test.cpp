@@ -146,16 +146,16 @@ TEST(Ltc, AreaLightHighlightsMatchNumericalIntegrationOfTheBrdf) {
         "worst %.3f (%.3f of the albedo), %d cases each\n",
         metals.rms(), metals.worst, metals.worstOfAlbedo, dielectrics.rms(), dielectrics.worst,
         dielectrics.worstOfAlbedo, metals.count);
-    // The metal's error is the fit's (measured RMS 0.091, worst 0.56 and 0.034 of the albedo: a
-    // grazing view of a light far from the mirror direction). The dielectric's adds Schlick's
-    // Fresnel taken as the whole lobe's mean (Hill and Heitz 2016): at grazing views it overstates
-    // the light reflected far from the mirror direction and understates it near there, where
-    // Fresnel is strongest (measured 0.29, worst 1.3 and 0.23 of the albedo).
-    EXPECT_LT(metals.rms(), 0.12);
-    EXPECT_LT(metals.worst, 0.7);
-    EXPECT_LT(metals.worstOfAlbedo, 0.05);
+    // The metal's error is the fit's (measured RMS 0.067, worst 0.29; 0.11 of the albedo for a lamp
+    // at the horizon in the mirror direction of an 80° view, roughness 0.25, 15 % too bright). The
+    // dielectric's adds Schlick's Fresnel taken as the whole lobe's mean (Hill and Heitz 2016): at
+    // grazing views it overstates the light reflected far from the mirror direction and understates
+    // it near there, where Fresnel is strongest (measured RMS 0.27, worst 0.91, 0.31 of the albedo).
+    EXPECT_LT(metals.rms(), 0.09);
+    EXPECT_LT(metals.worst, 0.4);
+    EXPECT_LT(metals.worstOfAlbedo, 0.15);
     EXPECT_LT(dielectrics.rms(), 0.35);
-    EXPECT_LT(dielectrics.worstOfAlbedo, 0.3);
+    EXPECT_LT(dielectrics.worstOfAlbedo, 0.4);
 }
 
 TEST(Ltc, ALightOverTheWholeSkyReflectsTheIntegratedDirectionalAlbedo) {
@@ -203,9 +203,8 @@ TEST(Ltc, TheRoughestLobeSeenFromAboveIsARotationallySymmetricCosine) {
 
 TEST(Ltc, ASmallLampReflectsLikeAPointLight) {
     // A lamp of 2 cm at 2 m: its reflection tends to brdfSpecular·cosθ·solid angle, the punctual
-    // lights' formula, where it sits in the body of a lobe that is wide against it. (Out in the tail
-    // of a lobe seen at a grazing angle, the fit's density is off more: 1.55× at roughness 0.4, 70°,
-    // 43° from the mirror direction.)
+    // lights' formula, where it sits in the body of a lobe that is wide against it (measured within
+    // 21 %). Out in the tail of a lobe seen at a grazing angle, the fit's density is off more.
     for (float roughness : {0.4f, 0.7f, 1.0f})
         for (double degrees : {0.0, 40.0})
             for (vec3 direction : {glm::normalize(vec3(-0.5f, 0.0f, 1.0f)), glm::normalize(vec3(0.3f, 0.4f, 1.0f))}) {
@@ -221,7 +220,7 @@ TEST(Ltc, ASmallLampReflectsLikeAPointLight) {
                                                              toViewer.z, half.z, glm::dot(toViewer, half))
                                          .g *
                                      direction.z * solidAngle;
-                EXPECT_NEAR(ltcSpecular(lamp, metal, view), point, 0.15 * point)
+                EXPECT_NEAR(ltcSpecular(lamp, metal, view), point, 0.25 * point)
                     << "roughness " << roughness << ", view " << degrees << "°";
             }
 }
