@@ -1,7 +1,7 @@
 // Direct light from area lights (LIGHT_AREA, src/scene/area_lights.h): the exact unshadowed
 // irradiance of each emitting triangle (area_light.h), times one shadow-map visibility for the
 // light, whose penumbra widens with the light's size (shadows.glsl). With AREA_LIGHT_SPECULAR
-// defined, also their exact GGX reflection (linearly transformed cosines, ltc.h).
+// defined, also their GGX reflection, exact up to a fitted table (linearly transformed cosines, ltc.h).
 // Requires: emitterTriangles[] (GpuEmitterTriangle), what direct_light.glsl requires, and with
 // AREA_LIGHT_SPECULAR ltcTable[] (GpuLtcEntry, the table of src/render/ltc_table.h).
 #ifndef VCT_AREA_LIGHTS_GLSL

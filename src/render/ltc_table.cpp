@@ -8,6 +8,8 @@ namespace {
 #include "render/ltc_ggx_table.inc"
 
 static_assert(sizeof(kLtcGgxFit) / sizeof(kLtcGgxFit[0]) == glsl::LTC_TABLE_SIZE * glsl::LTC_TABLE_SIZE);
+// The shader reads GpuLtcEntry[] as std430: two vec4s, 32 bytes, as C++ lays them out.
+static_assert(sizeof(glsl::GpuLtcEntry) == 32 && alignof(glsl::GpuLtcEntry) <= 16);
 
 }  // namespace
 
