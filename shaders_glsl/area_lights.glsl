@@ -1,7 +1,9 @@
 // Direct light from area lights (LIGHT_AREA, src/scene/area_lights.h): the exact unshadowed
 // irradiance of each emitting triangle (area_light.h), times one shadow-map visibility for the
-// light, whose penumbra widens with the light's size (shadows.glsl).
-// Requires: emitterTriangles[] (GpuEmitterTriangle) and what direct_light.glsl requires.
+// light, whose penumbra widens with the light's size (shadows.glsl). With AREA_LIGHT_SPECULAR
+// defined, also their GGX reflection, exact up to a fitted table (linearly transformed cosines, ltc.h).
+// Requires: emitterTriangles[] (GpuEmitterTriangle), what direct_light.glsl requires, and with
+// AREA_LIGHT_SPECULAR ltcTable[] (GpuLtcEntry, the table of src/render/ltc_table.h).
 #ifndef VCT_AREA_LIGHTS_GLSL
 #define VCT_AREA_LIGHTS_GLSL
 
@@ -24,41 +26,49 @@ vec3 areaLightIrradiance(GpuLight light, vec3 position, vec3 normal) {
     return irradiance;
 }
 
-// The light's specular reflection, approximated: GGX evaluated towards the point of the light
-// nearest the mirror direction (the light's disc in its plane), the lobe widened by the disc's
-// angular radius and renormalised (Karis 2013, "representative point"). Diffuse light is exact.
+#ifdef AREA_LIGHT_SPECULAR
+#include "ltc.h"
+
+// The GGX table's entry for (roughness, N·V), blended between its four neighbours (the CPU twin is
+// lookupLtcGgx in src/render/ltc_table.cpp).
+GpuLtcEntry ltcLookup(float roughness, float NdotV) {
+    vec2 coordinate = ltcTableCoordinate(roughness, NdotV);
+    uvec2 low = min(uvec2(coordinate), uvec2(LTC_TABLE_SIZE - 2u));
+    vec2 t = coordinate - vec2(low);
+    uint index = low.y * LTC_TABLE_SIZE + low.x;
+    GpuLtcEntry e00 = ltcTable[index], e10 = ltcTable[index + 1u];
+    GpuLtcEntry e01 = ltcTable[index + LTC_TABLE_SIZE], e11 = ltcTable[index + LTC_TABLE_SIZE + 1u];
+    GpuLtcEntry entry;
+    entry.inverseMatrix = mix(mix(e00.inverseMatrix, e10.inverseMatrix, t.x),
+                              mix(e01.inverseMatrix, e11.inverseMatrix, t.x), t.y);
+    entry.magnitudeFresnel = mix(mix(e00.magnitudeFresnel, e10.magnitudeFresnel, t.x),
+                                 mix(e01.magnitudeFresnel, e11.magnitudeFresnel, t.x), t.y);
+    return entry;
+}
+
+// The light's GGX reflection by linearly transformed cosines (ltc.h): each triangle whose front
+// faces the point, mapped into the space where the pixel's lobe is a clamped cosine, clipped to that
+// cosine's horizon and integrated exactly; exact up to the table's fit (a few percent).
 vec3 areaLightSpecular(GpuLight light, vec3 position, vec3 normal, vec3 toViewer, vec3 baseColor, float metallic,
                        float roughness, float specularWeight) {
-    vec3 centre = light.positionRange.xyz;
-    vec3 front = light.direction.xyz;
-    float lightRadius = light.positionRange.w;
-    vec3 reflected = reflect(-toViewer, normal);
-    vec3 nearest = centre;
-    float approach = dot(reflected, front);
-    if (approach < -1e-4f) {
-        float along = dot(centre - position, front) / approach;
-        if (along > 0.0f) nearest = position + reflected * along;
-    }
-    vec3 offset = nearest - centre;
-    offset -= front * dot(offset, front);
-    float offsetLength = length(offset);
-    if (offsetLength > lightRadius) offset *= lightRadius / offsetLength;
-    vec3 toLight = centre + offset - position;
-    float distanceToLight = length(toLight);
-    toLight /= max(distanceToLight, 1e-20f);
-    float NdotL = dot(normal, toLight);
-    float cosLight = -dot(front, toLight);
-    if (NdotL <= 0.0f || cosLight <= 0.0f) return vec3(0.0f);
-
-    float alpha = ggxAlpha(roughness);
-    float widened = min(alpha + 0.5f * lightRadius / max(distanceToLight, 1e-20f), 1.0f);
-    float normalisation = (alpha * alpha) / (widened * widened);
-    float solidAngle = min(light.direction.w * cosLight / (distanceToLight * distanceToLight), 2.0f * PI);
-    vec3 H = normalize(toViewer + toLight);
     float NdotV = max(dot(normal, toViewer), 1e-4f);
-    vec3 f = brdfSpecular(baseColor, metallic, roughness, specularWeight, NdotL, NdotV, max(dot(normal, H), 0.0f),
-                          max(dot(toViewer, H), 0.0f));
-    return f * light.radiantIntensity.rgb * (solidAngle * NdotL * normalisation);
+    GpuLtcEntry entry = ltcLookup(roughness, NdotV);
+    vec3 albedo = ltcSpecularAlbedo(entry.magnitudeFresnel, baseColor, metallic, specularWeight);
+    if (max(albedo.r, max(albedo.g, albedo.b)) <= 0.0f) return vec3(0.0f);
+    mat3 worldToCosine = ltcWorldToCosine(entry.inverseMatrix, normal, toViewer);
+    uint first = uint(light.spotShadow.x);
+    uint count = uint(light.spotShadow.y);
+    vec3 reflected = vec3(0.0f);
+    for (uint i = first; i < first + count; ++i) {
+        GpuEmitterTriangle triangle = emitterTriangles[i];
+        vec3 a = triangle.a.xyz - position;
+        vec3 b = triangle.b.xyz - position;
+        vec3 c = triangle.c.xyz - position;
+        if (dot(cross(b - a, c - a), -a) <= 0.0f) continue;  // front faces only, as for the irradiance
+        reflected += vec3(triangle.a.w, triangle.b.w, triangle.c.w) * ltcTriangleIntegral(worldToCosine, a, b, c);
+    }
+    return albedo * reflected;
 }
+#endif
 
 #endif

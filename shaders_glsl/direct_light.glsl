@@ -37,8 +37,9 @@ vec3 incidentLight(GpuLight light, vec3 position, out vec3 toLight, out float di
 }
 
 // Reflected radiance towards the viewer from one area light: its exact irradiance through the
-// diffuse lobe (whose Fresnel weight is taken towards the light's centre), and an approximate
-// specular highlight (areaLightSpecular).
+// diffuse lobe (whose Fresnel weight is taken towards the light's centre), and where the shader
+// defines AREA_LIGHT_SPECULAR (the shading pass; the injection reflects diffusely only) its GGX
+// highlight (areaLightSpecular).
 vec3 areaLightReflected(GpuLight light, SurfacePoint surface, uint flags) {
     vec3 irradiance = areaLightIrradiance(light, surface.position, surface.normal);
     if (dot(irradiance, irradiance) <= 0.0f) return vec3(0.0f);
@@ -52,9 +53,11 @@ vec3 areaLightReflected(GpuLight light, SurfacePoint surface, uint flags) {
         radiance += brdfDiffuse(surface.baseColor, surface.metallic, surface.specularWeight,
                                 max(dot(surface.toViewer, H), 0.0f)) * irradiance;
     }
+#ifdef AREA_LIGHT_SPECULAR
     if ((flags & SHOW_DIRECT_SPECULAR) != 0u)
         radiance += areaLightSpecular(light, surface.position, surface.normal, surface.toViewer, surface.baseColor,
                                       surface.metallic, surface.roughness, surface.specularWeight);
+#endif
     return radiance * visibility;
 }
 

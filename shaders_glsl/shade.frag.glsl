@@ -25,6 +25,10 @@ layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive text
 layout(std430, set = 0, binding = 17) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
 layout(set = 0, binding = 18) uniform sampler2DArrayShadow areaShadowMaps;
 layout(set = 0, binding = 19) uniform sampler2DArray areaShadowDepths;
+#include "ltc.h"
+// The area lights' GGX table of linearly transformed cosines (src/render/ltc_table.h).
+layout(std430, set = 0, binding = 20) readonly buffer LtcTable { GpuLtcEntry ltcTable[]; };
+#define AREA_LIGHT_SPECULAR
 #define SHADOW_BLOCKER_SEARCH
 // Whether the scene has area lights (with the component on): without them their code, which
 // costs lavapipe even where it never runs (a 1280×720 frame's shading took 6× longer), is left out.

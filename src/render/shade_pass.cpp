@@ -1,6 +1,7 @@
 #include "render/shade_pass.h"
 
 #include "gpu/commands.h"
+#include "render/ltc_table.h"
 
 namespace vct {
 
@@ -13,6 +14,8 @@ ShadePass::ShadePass(GpuContext& context, uint32_t targetWidth, uint32_t targetH
     desc.debugName = "radiance";
     radiance = GpuImage(context, desc);
     pointSampler = Sampler(context, nearestClampSampler());
+    const std::vector<glsl::GpuLtcEntry> table = ltcGgxTable();
+    ltcTable = uploadBuffer(context, table.data(), table.size() * sizeof(table[0]), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
@@ -46,6 +49,7 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .buffer(2, inputs.lights.lights)
             .buffer(3, inputs.lights.shadowViews)
             .buffer(17, inputs.lights.emitterTriangles)
+            .buffer(20, ltcTable.buffer)
             .sampledImage(4, shadows.sunMaps.view, shadows.compareSampler.sampler)
             .sampledImage(5, shadows.localMaps.view, shadows.compareSampler.sampler)
             .sampledImage(6, gbuffer.position.view, pointSampler.sampler)

@@ -43,6 +43,7 @@ struct ShadePass {
     uint32_t width, height;
     GpuImage radiance;  // RGBA32F
     Sampler pointSampler;
+    Buffer ltcTable;  // the area lights' GGX table (render/ltc_table.h), read by the shader at binding 20
 
 private:
     // Built the first time a frame asks for its variant.

@@ -251,6 +251,7 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     expected.push_back(binding(0, 17, kStorageBuffer, kFragment));  // the area lights' triangles
     expected.push_back(binding(0, 18, kCombined, kFragment));       // their shadow maps
     expected.push_back(binding(0, 19, kCombined, kFragment));       // ... and their depths
+    expected.push_back(binding(0, 20, kStorageBuffer, kFragment));  // their GGX table (ltc.h)
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }
