@@ -43,15 +43,25 @@ uint32_t mortonCode(const glm::vec3& position, const Bounds& bounds) {
     return code;
 }
 
+// A triangle's radiance: its material's emission × the mean of the emissive texture over the
+// triangle's own texture coordinates, so a model whose one texture atlas glows in a few places
+// gets lights there and nowhere else.
+glm::vec3 triangleRadiance(const Scene& scene, const Material& material, const Vertex* const v[3]) {
+    if (material.emissiveTexture < 0 || size_t(material.emissiveTexture) >= scene.textures.size())
+        return material.emission;
+    const glm::vec2 uv[3] = {{v[0]->u, v[0]->v}, {v[1]->u, v[1]->v}, {v[2]->u, v[2]->v}};
+    return material.emission * meanLinearColorOverTriangle(scene.textures[size_t(material.emissiveTexture)], uv);
+}
+
 std::vector<Emitter> emissiveTriangles(const Scene& scene, std::vector<uint32_t>& sourceTriangle) {
-    std::vector<glm::vec3> materialRadiance;
-    for (const Material& material : scene.materials) materialRadiance.push_back(voxelEmission(scene, material));
     std::vector<Emitter> emitters;
     for (size_t t = 0; t < scene.triangleCount(); ++t) {
-        const glm::vec3 radiance = materialRadiance[scene.triangleMaterials[t]];
-        if (!(std::max({radiance.r, radiance.g, radiance.b}) > 0.0f)) continue;
+        const Material& material = scene.materials[scene.triangleMaterials[t]];
+        if (!(std::max({material.emission.r, material.emission.g, material.emission.b}) > 0.0f)) continue;
         const Vertex* v[3] = {&scene.vertices[scene.indices[3 * t]], &scene.vertices[scene.indices[3 * t + 1]],
                               &scene.vertices[scene.indices[3 * t + 2]]};
+        const glm::vec3 radiance = triangleRadiance(scene, material, v);
+        if (!(std::max({radiance.r, radiance.g, radiance.b}) > 0.0f)) continue;
         Emitter emitter;
         emitter.triangle.radiance = radiance;
         for (int i = 0; i < 3; ++i) emitter.triangle.corners[i] = v[i]->position;

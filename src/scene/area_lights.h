@@ -24,7 +24,7 @@ constexpr size_t kMaxAreaLightTriangles = 128;
 
 struct EmitterTriangle {
     glm::vec3 corners[3];  // world space, wound so that cross(c1 − c0, c2 − c0) points out of the front
-    glm::vec3 radiance;    // from the front face: emission × its emissive texture's mean (scene units)
+    glm::vec3 radiance;    // from the front face: emission × its emissive texture's mean over it (scene units)
 };
 
 struct AreaLight {

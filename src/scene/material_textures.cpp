@@ -1,5 +1,6 @@
 #include "scene/material_textures.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -20,6 +21,39 @@ glm::vec3 meanLinearColor(const Texture& texture) {
         sum += glm::dvec3(table[texel[0]], table[texel[1]], table[texel[2]]);
     }
     return glm::vec3(sum / double(texels));
+}
+
+glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv[3]) {
+    const size_t texels = size_t(texture.width) * texture.height;
+    if (texels == 0 || texture.rgba8.size() < texels * 4) return glm::vec3(1.0f);
+    const glm::vec2 size(float(texture.width), float(texture.height));
+    const glm::vec2 e1 = (uv[1] - uv[0]) * size, e2 = (uv[2] - uv[0]) * size;
+    const float texelArea = 0.5f * std::abs(e1.x * e2.y - e1.y * e2.x);
+    const float wanted = std::ceil(std::sqrt(4.0f * texelArea));  // n² sub-triangles ≈ 2 per texel
+    const int n = std::isfinite(wanted) ? std::clamp(int(wanted), 1, 64) : 64;
+    auto texel = [&](glm::vec2 at) {
+        const glm::vec2 wrapped = at - glm::floor(at);  // REPEAT, the glTF default
+        const uint32_t x = std::min(uint32_t(wrapped.x * size.x), texture.width - 1);
+        const uint32_t y = std::min(uint32_t(wrapped.y * size.y), texture.height - 1);
+        const uint8_t* rgba = &texture.rgba8[4 * (size_t(y) * texture.width + x)];
+        return glm::dvec3(srgbToLinear(rgba[0] / 255.0f), srgbToLinear(rgba[1] / 255.0f),
+                          srgbToLinear(rgba[2] / 255.0f));
+    };
+    // The n² equal sub-triangles of the subdivision: (i, j) upright and, but on the diagonal, inverted.
+    glm::dvec3 sum(0.0);
+    int samples = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; i + j < n; ++j) {
+            const float a = (float(i) + 1.0f / 3.0f) / float(n), b = (float(j) + 1.0f / 3.0f) / float(n);
+            sum += texel(uv[0] + a * (uv[1] - uv[0]) + b * (uv[2] - uv[0]));
+            ++samples;
+            if (i + j + 1 < n) {
+                const float c = (float(i) + 2.0f / 3.0f) / float(n), d = (float(j) + 2.0f / 3.0f) / float(n);
+                sum += texel(uv[0] + c * (uv[1] - uv[0]) + d * (uv[2] - uv[0]));
+                ++samples;
+            }
+        }
+    return glm::vec3(sum / double(samples));
 }
 
 glm::vec3 voxelEmission(const Scene& scene, const Material& material) {

@@ -13,6 +13,12 @@ float srgbToLinear(float encoded);
 // The mean of the texture's sRGB-decoded RGB over all its texels; white for an empty texture.
 glm::vec3 meanLinearColor(const Texture& texture);
 
+// The mean of the texture's sRGB-decoded RGB over the triangle with corners uv[0..2] (texture
+// coordinates, repeating), sampled at the centroids of a regular subdivision of the triangle fine
+// enough for about two samples per texel it covers (at most 64 × 64 sub-triangles); white for an
+// empty texture.
+glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv[3]);
+
 // The radiance the voxelizer gives the material's surfaces: emission × the mean of its emissive
 // texture. An approximation: the voxels of a surface whose texture glows in a few places glow
 // evenly and faintly, with the same total power (for a texture mapped once over the surface).

@@ -4,6 +4,7 @@
 
 #include "scene/area_lights.h"
 #include "scene/load.h"
+#include "scene/material_textures.h"
 
 namespace vct {
 namespace {
@@ -112,6 +113,63 @@ TEST(AreaLightGrouping, ACurvedEmitterOverItsBudgetKeepsItsBrightestTrianglesAnd
     EXPECT_TRUE(someBrightest);
     EXPECT_LE(triangles, kMaxAreaLightTriangles);
     EXPECT_NEAR(power, scenePower, 1e-3f * scenePower);
+}
+
+// A 16×16 texture, black but for its top-left 4×4 texels, which are white.
+Texture glowingCorner() {
+    Texture texture;
+    texture.name = "glowing corner";
+    texture.width = texture.height = 16;
+    texture.rgba8.assign(16 * 16 * 4, 0);
+    for (uint32_t y = 0; y < 4; ++y)
+        for (uint32_t x = 0; x < 4; ++x)
+            for (int c = 0; c < 4; ++c) texture.rgba8[4 * (y * 16 + x) + size_t(c)] = 255;
+    return texture;
+}
+
+TEST(EmissiveTextureMean, IsTakenOverTheTrianglesOwnTextureCoordinates) {
+    const Texture texture = glowingCorner();
+    const glm::vec2 inCorner[3] = {{0.0f, 0.0f}, {0.25f, 0.0f}, {0.0f, 0.25f}};
+    const glm::vec2 outside[3] = {{0.5f, 0.5f}, {1.0f, 0.5f}, {0.5f, 1.0f}};
+    EXPECT_NEAR(meanLinearColorOverTriangle(texture, inCorner).g, 1.0f, 1e-6f);
+    EXPECT_EQ(meanLinearColorOverTriangle(texture, outside), glm::vec3(0.0f));
+    // Two triangles covering the texture once average to its mean (1/16 white) between them.
+    const glm::vec2 lower[3] = {{0, 0}, {1, 0}, {0, 1}}, upper[3] = {{1, 0}, {1, 1}, {0, 1}};
+    const float both =
+        0.5f * (meanLinearColorOverTriangle(texture, lower).r + meanLinearColorOverTriangle(texture, upper).r);
+    EXPECT_NEAR(both, meanLinearColor(texture).r, 0.01f);
+    // Coordinates repeat, as glTF's default sampler does.
+    const glm::vec2 shifted[3] = {{2.0f, -1.0f}, {2.25f, -1.0f}, {2.0f, -0.75f}};
+    EXPECT_NEAR(meanLinearColorOverTriangle(texture, shifted).b, 1.0f, 1e-6f);
+}
+
+// A ceiling of 4×4 quads sharing one emissive material whose texture glows in one corner: only the
+// quad mapped onto that corner is a light (a texture atlas of a model glows in a few places).
+TEST(EmissiveTextureMean, OnlyTheTrianglesMappedOntoTheGlowBecomeLights) {
+    Scene scene;
+    scene.name = "atlas";
+    scene.textures.push_back(glowingCorner());
+    Material glow;
+    glow.emission = glm::vec3(3.0f);
+    glow.emissiveTexture = 0;
+    scene.materials = {glow};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const uint32_t base = uint32_t(scene.vertices.size());
+            for (glm::vec2 d : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
+                const glm::vec2 uv = (glm::vec2(float(i), float(j)) + d) * 0.25f;
+                scene.vertices.push_back(
+                    {glm::vec3(float(i) + d.x, 2.0f, float(j) + d.y), uv.x, glm::vec3(0, -1, 0), uv.y});
+            }
+            for (uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(base + k);
+            scene.triangleMaterials.insert(scene.triangleMaterials.end(), {0u, 0u});
+        }
+    const std::vector<AreaLight> lights = findAreaLights(scene);
+    ASSERT_EQ(lights.size(), 1u);
+    EXPECT_EQ(lights[0].sourceTriangles, 2u);
+    EXPECT_NEAR(lights[0].area, 1.0f, 1e-5f);
+    EXPECT_NEAR(lights[0].centroid.x, 0.5f, 1e-5f);
+    EXPECT_NEAR(lights[0].meanRadiance.g, 3.0f, 1e-5f);
 }
 
 }  // namespace
