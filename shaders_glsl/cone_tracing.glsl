@@ -5,6 +5,7 @@
 #ifndef VCT_CONE_TRACING_GLSL
 #define VCT_CONE_TRACING_GLSL
 
+#include "perpendicular.glsl"
 #include "voxel_grid.h"
 
 // The volume seen by a cone travelling along `direction`: isotropic, or (anisotropic voxels) the
@@ -144,12 +145,6 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     return result;
 }
 
-// Any unit vector perpendicular to n.
-vec3 perpendicular(vec3 n) {
-    vec3 helper = abs(n.x) < 0.9f ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f);
-    return normalize(cross(n, helper));
-}
-
 // Indirect diffuse light: one cone along the normal and the others in a ring around it, at
 // twice the half-aperture from the normal (60° for the default 60° cones), so neighbouring
 // cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
@@ -160,7 +155,7 @@ vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
     float centreWeight = count == 1u ? 1.0f : frame.diffuseCentreWeight;
     float sideWeight = count == 1u ? 0.0f : (1.0f - centreWeight) / float(count - 1u);
     float ringAngle = min(2.0f * atan(tanHalf), 1.4f);
-    vec3 tangent = perpendicular(normal);
+    vec3 tangent = perpendicularTo(normal);
     vec3 bitangent = cross(normal, tangent);
 
     ConeResult centre = traceCone(origin, normal, tanHalf, startHeight, 1.0f);

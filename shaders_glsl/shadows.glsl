@@ -8,6 +8,8 @@
 #ifndef VCT_SHADOWS_GLSL
 #define VCT_SHADOWS_GLSL
 
+#include "perpendicular.glsl"
+
 // The view of a point light that sees `toSurface`: cube face by the major axis, ordered
 // +X, −X, +Y, −Y, +Z, −Z as the CPU builds them.
 uint cubeFace(vec3 toSurface) {
@@ -15,11 +17,6 @@ uint cubeFace(vec3 toSurface) {
     if (a.x >= a.y && a.x >= a.z) return toSurface.x >= 0.0f ? 0u : 1u;
     if (a.y >= a.z) return toSurface.y >= 0.0f ? 2u : 3u;
     return toSurface.z >= 0.0f ? 4u : 5u;
-}
-
-// Any unit vector perpendicular to unit n.
-vec3 perpendicularTo(vec3 n) {
-    return normalize(cross(n, abs(n.x) < 0.9f ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f)));
 }
 
 // How far from facing the light a receiver's plane is trusted: tan 80°.
