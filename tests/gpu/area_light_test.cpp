@@ -94,6 +94,18 @@ RenderSettings directSettings(uint32_t size) {
     return settings;
 }
 
+// The path tracer's direct light of `scene` from its first camera, size × size at 256 samples a pixel.
+Image pathTracedDirectLight(const Scene& scene, uint32_t size) {
+    pt::PathTracer tracer = pt::createPathTracer(scene);
+    pt::RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.samplesPerPixel = 256;
+    settings.component = pt::Component::Direct;
+    settings.threads = 1;
+    settings.camera = scene.cameras.front();
+    return pt::render(tracer, settings).image;
+}
+
 glm::vec3 pixelRay(const Camera& camera, uint32_t x, uint32_t y, uint32_t size) {
     const glm::vec3 forward = glm::normalize(camera.forward);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
@@ -153,14 +165,7 @@ TEST_F(AreaLights, ABoxCastsTheSoftShadowThePathTracerSees) {
     Renderer renderer(gpu(), scene, directSettings(size));
     renderer.renderFrame();
     const Image image = renderer.readImage();
-    pt::PathTracer tracer = pt::createPathTracer(scene);
-    pt::RenderSettings truthSettings;
-    truthSettings.width = truthSettings.height = size;
-    truthSettings.samplesPerPixel = 256;
-    truthSettings.component = pt::Component::Direct;
-    truthSettings.threads = 1;
-    truthSettings.camera = scene.cameras.front();
-    const Image truth = pt::render(tracer, truthSettings).image;
+    const Image truth = pathTracedDirectLight(scene, size);
     // Floor pixels in the penumbra: the truth between a fifth and four fifths of the light it would
     // get unshadowed (numerically integrated, as above).
     int penumbra = 0, softHere = 0;
@@ -199,14 +204,7 @@ HighlightError glossyHighlightError(const Material& floor) {
     Renderer renderer(gpu(), scene, directSettings(size));
     renderer.renderFrame();
     const Image image = renderer.readImage();
-    pt::PathTracer tracer = pt::createPathTracer(scene);
-    pt::RenderSettings truthSettings;
-    truthSettings.width = truthSettings.height = size;
-    truthSettings.samplesPerPixel = 256;
-    truthSettings.component = pt::Component::Direct;
-    truthSettings.threads = 1;
-    truthSettings.camera = scene.cameras.front();
-    const Image truth = pt::render(tracer, truthSettings).image;
+    const Image truth = pathTracedDirectLight(scene, size);
     float peak = 0.0f;
     forEachFloorPixel(scene.cameras[0], size,
                       [&](uint32_t x, uint32_t y, glm::vec3) { peak = std::max(peak, truth.pixel(x, y)[1]); });
