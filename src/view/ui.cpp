@@ -9,6 +9,7 @@
 
 #include "render/presets.h"
 #include "scene/load.h"
+#include "view/scene_panel.h"
 
 namespace vct {
 namespace {
@@ -87,15 +88,6 @@ static void sceneSection(ViewerState& state) {
     ImGui::SameLine();
     if (ImGui::Button("Load") && state.scenePathField[0] != '\0') state.requestedScene = state.scenePathField;
     wrappedNote("a .gltf/.glb path, or drop the file on the window");
-}
-
-static void lightSection(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Sun", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    ImGui::SliderFloat("azimuth", &state.sun.azimuthDegrees, 0.0f, 360.0f, "%.0f deg");
-    ImGui::SliderFloat("elevation", &state.sun.elevationDegrees, -89.0f, 89.0f, "%.0f deg");
-    ImGui::SliderFloat("intensity (lux)", &state.sun.intensity, 0.0f, 20.0f, "%.2f");
-    ImGui::Checkbox("animate (L)", &state.sun.animate);
-    ImGui::SliderFloat("animation speed", &state.sun.animateDegreesPerSecond, -90.0f, 90.0f, "%.0f deg/s");
 }
 
 static void shadingSection(ViewerState& state, const UiFacts& facts) {
@@ -199,7 +191,8 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
     ImGui::PushItemWidth(-ImGui::CalcTextSize("local shadow map  ").x);
     presetRow(state);
     sceneSection(state);
-    lightSection(state);
+    drawLightsSection(state);
+    drawMaterialsSection(state);
     shadingSection(state, facts);
     coneSection(state.settings);
     resolutionSection(state);

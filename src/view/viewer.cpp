@@ -36,6 +36,15 @@ bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
 }
 
+bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].color != b[i].color || a[i].intensity != b[i].intensity || a[i].position != b[i].position ||
+            a[i].direction != b[i].direction)
+            return false;
+    return true;
+}
+
 // Scenes with lights but no sun get one to steer, as `--light-dir` does: shining from behind the
 // camera and above, so it reaches into open boxes like the Cornell box. (Scenes without any light
 // already have the default sun, default_light.h, as in `vct render`.)
@@ -79,6 +88,8 @@ private:
     void handleKeys(float seconds);
     void handleMouse(float seconds);
     void applyRequests();
+    void applyLightEdits();
+    void showScene();
     bool loadScene(const std::string& name);
     void buildRenderer();
     void recreateSwapchain();
@@ -104,7 +115,6 @@ private:
     InputState input_;
     ViewerState state_;
     Scene scene_;
-    size_t sunIndex_ = 0;
     SunControl shownSun_;  // the sun the renderer has
     Camera camera_;
     Camera lastRenderedCamera_;
@@ -165,13 +175,9 @@ Viewer::Viewer(ViewerOptions options)
     state_.sceneName = options_.sceneName;
     state_.warnings = scene_.warnings;  // printed on stderr by `vct view` already
     if (scene_.cameras.empty()) scene_.cameras.push_back(defaultCamera(scene_.bounds()));
-    sunIndex_ = ensureSun(scene_);
-    state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
-    state_.sun.intensity = scene_.lights[sunIndex_].intensity;
-    shownSun_ = state_.sun;
-    camera_ = scene_.cameras.front();
-    cameraControl_.reset(camera_, scene_.bounds());
+    state_.sunIndex = ensureSun(scene_);
     buildRenderer();
+    showScene();
     std::printf("vct view: %s, %zu triangles, on %s (%s)\n", state_.sceneName.c_str(), scene_.triangleCount(),
                 context_->deviceName().c_str(), presentModeName(swapchain_->presentMode));
     if (softwarePreset) std::printf("vct view: %s\n", state_.notice.c_str());
@@ -256,28 +262,37 @@ bool Viewer::loadScene(const std::string& name) {
     addDefaultSunIfUnlit(loaded);  // as `vct render` would light it
     Scene previous = std::move(scene_);
     scene_ = std::move(loaded);
-    const size_t previousSun = sunIndex_;
-    sunIndex_ = ensureSun(scene_);
+    const size_t previousSun = state_.sunIndex;
+    state_.sunIndex = ensureSun(scene_);
     try {
         buildRenderer();
     } catch (const Error& error) {
         state_.error = std::string(error.what()) + " (keeping " + state_.sceneName + ")";
         scene_ = std::move(previous);
-        sunIndex_ = previousSun;
-        buildRenderer();
+        state_.sunIndex = previousSun;
+        buildRenderer();  // the panel's edits of the previous scene's lights return next frame
         return false;
     }
     state_.error.clear();
     state_.sceneName = name;
     for (const std::string& warning : scene_.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     state_.warnings = scene_.warnings;
-    state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
-    state_.sun.intensity = scene_.lights[sunIndex_].intensity;
+    showScene();
+    return true;
+}
+
+// The panels and the camera start from the scene the renderer was just built for.
+void Viewer::showScene() {
+    state_.lights = scene_.lights;
+    state_.materials = scene_.materials;
+    state_.sceneSize = std::max(glm::length(scene_.bounds().extent()), 1e-3f);
+    const Light& sun = scene_.lights.at(state_.sunIndex);
+    state_.sun.setFromTravelDirection(sun.direction);
+    state_.sun.intensity = sun.intensity;
     shownSun_ = state_.sun;
     camera_ = scene_.cameras.front();
     cameraControl_.reset(camera_, scene_.bounds());
     renderer_->setCamera(camera_);
-    return true;
 }
 
 void Viewer::applyScript() {
@@ -314,6 +329,14 @@ void Viewer::applyScript() {
             pendingScreenshots_.emplace_back(a[0], a.size() > 1);
         } else if (event.action == "drop") {
             input_.droppedFiles.push_back(a[0]);
+        } else if (event.action == "light") {
+            // What the scene panel's intensity field writes (the sun's is the sun control's).
+            const float index = parseNumber(event, 0), intensity = parseNumber(event, 2);
+            if (index < 0.0f || index >= float(state_.lights.size()) || index != std::floor(index))
+                throw Error("script, frame " + std::to_string(event.frame) + ": the scene has no light " + a[0] +
+                            " (it has " + std::to_string(state_.lights.size()) + ", counted from 0)");
+            if (size_t(index) == state_.sunIndex) state_.sun.intensity = intensity;
+            else state_.lights[size_t(index)].intensity = intensity;
         } else if (event.action == "quit") {
             quit_ = true;
         }
@@ -416,17 +439,7 @@ void Viewer::applyRequests() {
         pendingScreenshots_.emplace_back(timestampedScreenshotName(), state_.screenshotWithUi);
     }
 
-    state_.sun.normalize();
-    const SunControl& sun = state_.sun;
-    if (sun.azimuthDegrees != shownSun_.azimuthDegrees || sun.elevationDegrees != shownSun_.elevationDegrees ||
-        sun.intensity != shownSun_.intensity) {
-        std::vector<Light> lights = renderer_->lights();
-        lights.at(sunIndex_).direction = sun.travelDirection();
-        lights.at(sunIndex_).intensity = sun.intensity;
-        renderer_->setLights(lights);  // re-injects light; the voxels stay
-        shownSun_ = sun;
-        imageStale_ = true;
-    }
+    applyLightEdits();
     if (renderer_->settings().resources != state_.settings.resources) {
         const RenderSettings previous = renderer_->settings();
         try {
@@ -449,6 +462,32 @@ void Viewer::applyRequests() {
     }
     if (state_.vsync != shownVsync_) swapchainStale_ = true;
     if (state_.renderScale != shownRenderScale_) resizeRenderer();
+}
+
+// The sun steered by keys, mouse or panel, and the other lights edited in the panel, reach the
+// renderer by one path: setLights re-injects light and redraws the shadow maps of the lights that
+// moved; the voxels stay, and the bounces re-converge over the next frames.
+void Viewer::applyLightEdits() {
+    state_.sun.normalize();
+    const SunControl& sun = state_.sun;
+    Light& sunLight = state_.lights.at(state_.sunIndex);
+    if (sun.azimuthDegrees != shownSun_.azimuthDegrees || sun.elevationDegrees != shownSun_.elevationDegrees ||
+        sun.intensity != shownSun_.intensity) {
+        sunLight.direction = sun.travelDirection();
+        sunLight.intensity = sun.intensity;
+        shownSun_ = sun;
+    }
+    if (sameLights(state_.lights, renderer_->lights())) return;
+    try {
+        renderer_->setLights(state_.lights);
+        imageStale_ = true;
+    } catch (const Error& error) {
+        // E.g. brighter than the voxels' float16 can hold: the renderer keeps its lights.
+        state_.error = error.what();
+        state_.lights = renderer_->lights();
+        state_.sun.intensity = state_.lights.at(state_.sunIndex).intensity;
+        shownSun_ = state_.sun;
+    }
 }
 
 UiFacts Viewer::facts() const {

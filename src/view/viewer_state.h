@@ -36,8 +36,14 @@ struct ViewerState {
     float exposure = 1.0f;
     float renderScale = 1.0f;  // renderer image size / window size
     SunControl sun;
-    bool showGuide = false;  // F1 opens it; the status bar says so
-    bool showHint = true;    // that one-line hint (--no-guide: neither)
+    // The scene's lights as the scene panel edits them; the main loop hands them to the renderer
+    // when they differ from its own. The sun's direction and intensity come from `sun`.
+    std::vector<Light> lights;
+    size_t sunIndex = 0;
+    std::vector<Material> materials;  // shown, not edited
+    float sceneSize = 1.0f;           // the bounds' diagonal, for drag speeds
+    bool showGuide = false;           // F1 opens it; the status bar says so
+    bool showHint = true;             // that one-line hint (--no-guide: neither)
     bool guideOpened = false;
     float statusBarHeight = 0.0f;  // last frame's, so the settings window ends above it
     bool showProfiler = true;

@@ -330,6 +330,46 @@ TEST_F(View, SceneWarningsAreShownInTheWindow) {
         << "the warning is not shown in the window";
 }
 
+TEST_F(View, DimmingALightInTheScenePanelRerunsOnlyTheLightPasses) {
+    // 640×360, the Cornell box: light 0 is its point light, light 1 the viewer's sun. A click opens
+    // light 0's node in the Lights section; a drag to the left across its intensity field takes the
+    // intensity to 0 (the field clamps there). The box gets darker, and as when the arrow keys move
+    // the sun, the light is re-injected while the voxels stay.
+    const std::string events =
+        "2 screenshot before.png; 3 mouse 100 105; 4 button left down; 5 button left up; 6 mouse 210 123;"
+        "7 button left down; 8 mouse 5 123; 9 button left up; 10 screenshot panel.png ui; 11 screenshot after.png;"
+        "12 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    const Png before = crop(screenshot("before.png"), 400, 0, 640, 330);
+    const Png after = crop(screenshot("after.png"), 400, 0, 640, 330);
+    ASSERT_FALSE(after.rgb.empty()) << log;
+    EXPECT_LT(meanValue(after), meanValue(before) - 10.0) << "the point light still shines\n" << log;
+    EXPECT_NE(log.find("ran shadow inject mips gbuffer diffuse-cones shade resolve; skipped voxelize bounce\n"),
+              std::string::npos)
+        << log;
+}
+
+TEST_F(View, ALightEntryInAScriptSetsItsIntensity) {
+    // The `light` entry writes what the panel's intensity field writes: 0 darkens the box, 4 (cd)
+    // brightens it past the start (1 cd); the sun's goes through the sun control, as its field does.
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot start.png; 2 light 0 intensity 0; 3 screenshot off.png;"
+                               "4 light 0 intensity 4; 5 screenshot bright.png; 6 light 1 intensity 0;"
+                               "7 screenshot no_sun.png; 8 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    const double start = meanValue(screenshot("start.png")), bright = meanValue(screenshot("bright.png"));
+    EXPECT_LT(meanValue(screenshot("off.png")), start - 10.0) << log;
+    EXPECT_GT(bright, start + 10.0) << log;
+    EXPECT_LT(meanValue(screenshot("no_sun.png")), bright - 2.0) << log;
+}
+
+TEST_F(View, ALightEntryForALightTheSceneLacksIsAnError) {
+    EXPECT_EQ(runViewer("--events '1 light 7 intensity 2; 2 quit'"), 1) << log;
+    EXPECT_NE(log.find("the scene has no light 7 (it has 2, counted from 0)"), std::string::npos) << log;
+    EXPECT_EQ(runViewer("--events '1 light 0 colour 2'"), 1) << log;
+    EXPECT_NE(log.find("a light's intensity is what a script sets"), std::string::npos) << log;
+}
+
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
     EXPECT_EQ(runViewer("--events '1 jump'"), 1);
     EXPECT_NE(log.find("unknown action 'jump'"), std::string::npos) << log;
