@@ -46,9 +46,11 @@ static VkRenderPass createRenderPass(GpuContext& context, VkFormat format) {
     return renderPass;
 }
 
-// gpu/pipelines.h makes pipelines for dynamic rendering; this one belongs to a VkRenderPass.
-static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout layout, VkRenderPass renderPass,
-                                        const ShaderCode& vertexCode, const ShaderCode& fragmentCode) {
+// gpu/pipelines.h makes pipelines for dynamic rendering; these belong to a VkRenderPass. The
+// tone map draws a full-screen triangle, the grid bounds a line list; neither blends.
+static VkPipeline createPresentPipeline(GpuContext& context, VkPipelineLayout layout, VkRenderPass renderPass,
+                                        const ShaderCode& vertexCode, const ShaderCode& fragmentCode,
+                                        VkPrimitiveTopology topology) {
     const VkShaderModule vertex = createShaderModule(context, vertexCode);
     const VkShaderModule fragment = createShaderModule(context, fragmentCode);
     VkPipelineShaderStageCreateInfo stages[2]{};
@@ -68,7 +70,7 @@ static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout la
                  nullptr};
     const VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    inputAssembly.topology = topology;
     VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
@@ -115,7 +117,13 @@ PresentPass::PresentPass(GpuContext& context, VkFormat swapchainFormat)
     const ShaderCode vertex = loadShader("fullscreen.vert"), fragment = loadShader("tonemap.frag");
     const ShaderLayout layout = createShaderLayout(context, {vertex, fragment});
     tonemap_ = Pipeline(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // freed on a throw
-    tonemap_.pipeline = createTonemapPipeline(context, layout.layout, renderPass, vertex, fragment);
+    tonemap_.pipeline = createPresentPipeline(context, layout.layout, renderPass, vertex, fragment,
+                                              VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST);
+    const ShaderCode boxVertex = loadShader("grid_bounds.vert"), boxFragment = loadShader("grid_bounds.frag");
+    const ShaderLayout boxLayout = createShaderLayout(context, {boxVertex, boxFragment});
+    gridBounds_ = Pipeline(context, VK_NULL_HANDLE, boxLayout.layout, boxLayout.setLayout);
+    gridBounds_.pipeline = createPresentPipeline(context, boxLayout.layout, renderPass, boxVertex, boxFragment,
+                                                 VK_PRIMITIVE_TOPOLOGY_LINE_LIST);
 }
 
 PresentPass::~PresentPass() {
@@ -165,6 +173,12 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
         {1.0f / float(extent.width), 1.0f / float(extent.height)}, params.exposure, params.toneCurve ? 1u : 0u};
     vkCmdPushConstants(commands, tonemap_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDraw(commands, 3, 1, 0, 0);
+}
+
+void PresentPass::drawGridBounds(VkCommandBuffer commands, const glsl::GridBoundsPush& push) {
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, gridBounds_.pipeline);
+    vkCmdPushConstants(commands, gridBounds_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdDraw(commands, 24, 1, 0, 0);
 }
 
 void PresentPass::end(VkCommandBuffer commands) { vkCmdEndRenderPass(commands); }

@@ -117,6 +117,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
     int mip = int(settings.shading.debugVoxelMip);
     ImGui::SliderInt("voxel mip", &mip, 0, int(facts.voxelMips) - 1);
     settings.shading.debugVoxelMip = uint32_t(std::clamp(mip, 0, int(facts.voxelMips) - 1));
+    ImGui::Checkbox("voxel grid bounds (G)", &state.showGridBounds);
 }
 
 static void coneSection(RenderSettings& settings) {
@@ -362,6 +363,7 @@ void drawGuideWindow(ViewerState& state) {
         {"V", "next view: lit, base colour, normal, depth, AO, voxels"},
         {"[ / ]", "voxel mip shown by the voxel views"},
         {"L", "animate the sun"},
+        {"G", "draw the voxel grid's box: amber lines over the image, edges behind the scene included"},
         {"F12 or P", "screenshot (PNG in the current folder)"},
         {"Tab", "hide or show the panels"},
         {"F1 or H", "this guide"},

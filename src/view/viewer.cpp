@@ -97,6 +97,7 @@ private:
     VkExtent2D drawableExtent(VkExtent2D window) const;
     void drawFrame(bool drawUi, const std::string& screenshotPath);
     void writeScreenshot(const Buffer& pixels, const std::string& path);
+    glsl::GridBoundsPush gridBoundsPush() const;
     UiFacts facts() const;
     void printFrameStats(const FrameStats& stats) const;
 
@@ -370,6 +371,7 @@ void Viewer::handleKeys(float seconds) {
                     ++settings.shading.debugVoxelMip;
                 break;
             case GLFW_KEY_L: state_.sun.animate = !state_.sun.animate; break;
+            case GLFW_KEY_G: state_.showGridBounds = !state_.showGridBounds; break;
             case GLFW_KEY_F12:
             case GLFW_KEY_P: state_.requestScreenshot = true; break;
             case GLFW_KEY_ESCAPE: quit_ = true; break;
@@ -522,6 +524,25 @@ void Viewer::writeScreenshot(const Buffer& pixels, const std::string& path) {
     std::printf("saved %s (%ux%u)\n", path.c_str(), extent.width, extent.height);
 }
 
+// The voxel grid's box seen by the camera the image was rendered with, in the renderer's frame.
+glsl::GridBoundsPush Viewer::gridBoundsPush() const {
+    const glsl::VoxelGridParams& grid = renderer_->voxelGrid();
+    Bounds box;
+    box.min = glm::vec3(grid.originVoxelSize);
+    box.max = box.min + float(grid.resolution.x) * grid.originVoxelSize.w;
+    Camera camera = renderer_->camera();
+    camera.position -= renderer_->sceneOrigin();
+    const ImageSettings& image = renderer_->settings().image;
+    glsl::GridBoundsPush push{};
+    // The far plane fitted to the box rather than the scene: the grid's corners reach past the
+    // scene's, and a line past the far plane would be cut.
+    push.viewProjection = cameraMatrices(camera, float(image.width) / float(image.height), box).viewProjection;
+    push.boxMin = glm::vec4(box.min, 1.0f);
+    push.boxMax = glm::vec4(box.max, 1.0f);
+    push.color = glm::vec4(1.0f, 0.8f, 0.1f, 1.0f);  // amber: apart from every colour the Cornell box has
+    return push;
+}
+
 void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     PresentCommands& frame = *presentCommands_;
     uint32_t imageIndex = 0;
@@ -552,6 +573,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     const DebugView view = renderer_->settings().shading.debugView;
     tonemap.toneCurve = view == DebugView::None || view == DebugView::VoxelRadiance;
     presentPass_->begin(frame.commands, imageIndex, extent, renderer_->output(), tonemap);
+    if (state_.showGridBounds) presentPass_->drawGridBounds(frame.commands, gridBoundsPush());
     if (drawUi) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.commands);
     presentPass_->end(frame.commands);
     presentTimer_->end(frame.commands);

@@ -49,6 +49,7 @@ struct ViewerState {
     bool showProfiler = true;
     bool wasNarrow = false;  // the window was too narrow for the settings and the profiler side by side
     bool showPanels = true;
+    bool showGridBounds = false;  // the voxel grid's box as lines over the image (G)
     bool vsync = true;
     bool screenshotWithUi = false;
 

@@ -6,6 +6,7 @@
 #include <stb/stb_image_write.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -368,6 +369,51 @@ TEST_F(View, ALightEntryForALightTheSceneLacksIsAnError) {
     EXPECT_NE(log.find("the scene has no light 7 (it has 2, counted from 0)"), std::string::npos) << log;
     EXPECT_EQ(runViewer("--events '1 light 0 colour 2'"), 1) << log;
     EXPECT_NE(log.find("a light's intensity is what a script sets"), std::string::npos) << log;
+}
+
+// The smallest rectangle holding every pixel `keep(x, y)` picks; empty (x0 > x1) when none.
+struct Rect {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+    void add(int x, int y) { x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y); }
+};
+
+TEST_F(View, TheGridBoundsKeyDrawsTheVoxelGridsBoxAroundTheScene) {
+    // O and the wheel back: orbiting far enough out that the whole grid is in view. G draws the
+    // grid's box as amber lines over the image, G again hides it. The voxel grid holds the scene,
+    // and fits it (the Cornell box is a cube, the grid a cube a little larger): the lines' bounding
+    // rectangle holds every lit pixel of the plain image and is not much larger than theirs.
+    const std::string events = std::string(hidePanels) +
+                               "1 key O press; 2 scroll -8; 4 screenshot plain.png; 5 key G press;"
+                               "6 screenshot box.png; 7 key G press; 8 screenshot off.png; 9 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    const Png plain = screenshot("plain.png"), box = screenshot("box.png");
+    ASSERT_FALSE(box.rgb.empty()) << log;
+    ASSERT_EQ(plain.width, box.width);
+    Rect lines, scene;
+    size_t changed = 0, amber = 0;
+    for (int y = 0; y < plain.height; ++y)
+        for (int x = 0; x < plain.width; ++x) {
+            const unsigned char* before = &plain.rgb[(size_t(y) * plain.width + x) * 3];
+            const unsigned char* after = &box.rgb[(size_t(y) * plain.width + x) * 3];
+            if (before[0] + before[1] + before[2] > 30) scene.add(x, y);
+            if (std::abs(before[0] - after[0]) + std::abs(before[1] - after[1]) + std::abs(before[2] - after[2]) <= 12)
+                continue;
+            ++changed;
+            lines.add(x, y);
+            amber += after[0] > 220 && after[1] > 160 && after[1] < 240 && after[2] < 80;
+        }
+    const double pixels = double(plain.width) * plain.height;
+    EXPECT_GT(changed / pixels, 0.002) << "no lines drawn\n" << log;
+    EXPECT_LT(changed / pixels, 0.05) << "more than lines drawn";
+    EXPECT_GT(double(amber), 0.95 * double(changed)) << "what changed is not the lines' colour";
+    ASSERT_LE(scene.x0, scene.x1) << "the scene is not in view";
+    EXPECT_LE(lines.x0, scene.x0);
+    EXPECT_GE(lines.x1, scene.x1);
+    EXPECT_LE(lines.y0, scene.y0);
+    EXPECT_GE(lines.y1, scene.y1);
+    EXPECT_LT(lines.x1 - lines.x0, 1.2 * (scene.x1 - scene.x0)) << "the box is far larger than the scene";
+    EXPECT_LT(lines.y1 - lines.y0, 1.2 * (scene.y1 - scene.y0)) << "the box is far larger than the scene";
+    EXPECT_LT(changedFraction(plain, screenshot("off.png")), 0.001) << "G again hides the box";
 }
 
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
