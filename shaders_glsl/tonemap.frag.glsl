@@ -8,14 +8,15 @@
 
 layout(set = 0, binding = 0) uniform sampler2D radiance;
 layout(push_constant) uniform Push {
-    vec2 inverseTargetSize;  // 1 / swapchain extent
+    vec2 areaOffset;         // the image's top-left corner in the window, pixels
+    vec2 inverseAreaSize;    // 1 / its size
     float exposure;
     uint applyToneCurve;     // 0 = show values as they are (clamped to 0..1)
 };
 layout(location = 0) out vec4 color;
 
 void main() {
-    vec3 value = textureLod(radiance, gl_FragCoord.xy * inverseTargetSize, 0.0f).rgb;
+    vec3 value = textureLod(radiance, (gl_FragCoord.xy - areaOffset) * inverseAreaSize, 0.0f).rgb;
     vec3 mapped;
     for (int c = 0; c < 3; ++c) {
         // NaN and infinity (a broken pixel) show black, as in the PNG writer.

@@ -6,7 +6,8 @@
 namespace vct {
 
 struct TonemapPush {
-    float inverseTargetSize[2];
+    float areaOffset[2];
+    float inverseAreaSize[2];
     float exposure;
     uint32_t applyToneCurve;
 };
@@ -15,7 +16,7 @@ static VkRenderPass createRenderPass(GpuContext& context, VkFormat format) {
     VkAttachmentDescription attachment{};
     attachment.format = format;
     attachment.samples = VK_SAMPLE_COUNT_1_BIT;
-    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the full-screen triangle covers every pixel
+    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // the image may leave part of the window (beside the settings)
     attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -151,8 +152,8 @@ void PresentPass::createFramebuffers(const Swapchain& swapchain) {
     }
 }
 
-void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, const GpuImage& radiance,
-                        const TonemapParams& params) {
+void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, VkRect2D area,
+                        const GpuImage& radiance, const TonemapParams& params) {
     // The renderer's resolve wrote the image in an earlier submission: make it visible here.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
@@ -160,17 +161,24 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
     info.renderPass = renderPass;
     info.framebuffer = framebuffers_.at(imageIndex);
     info.renderArea = {{0, 0}, extent};
+    const VkClearValue black{};
+    info.clearValueCount = 1;
+    info.pClearValues = &black;
     vkCmdBeginRenderPass(commands, &info, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    // The tone map and the grid bounds draw into the image's area; ImGui sets its own viewport.
+    const VkViewport viewport{
+        float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
+    const VkRect2D scissor = area;
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &scissor);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.pipeline);
     DescriptorPush()
         .sampledImage(0, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.layout);
-    const TonemapPush push{
-        {1.0f / float(extent.width), 1.0f / float(extent.height)}, params.exposure, params.toneCurve ? 1u : 0u};
+    const TonemapPush push{{float(area.offset.x), float(area.offset.y)},
+                           {1.0f / float(area.extent.width), 1.0f / float(area.extent.height)},
+                           params.exposure,
+                           params.toneCurve ? 1u : 0u};
     vkCmdPushConstants(commands, tonemap_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDraw(commands, 3, 1, 0, 0);
 }

@@ -32,8 +32,9 @@ public:
     void createFramebuffers(const Swapchain& swapchain);
 
     // `radiance` is in GENERAL layout, written by earlier submissions (the renderer's frame).
-    void begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, const GpuImage& radiance,
-               const TonemapParams& params);
+    // The image fills `area` of the window (`extent`); the rest is cleared to black.
+    void begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, VkRect2D area,
+               const GpuImage& radiance, const TonemapParams& params);
     // The voxel grid's 12 edges as 1-pixel lines over the tone-mapped image. Not depth-tested (the
     // present pass has no depth): edges behind the scene show too, so the whole box reads at once.
     void drawGridBounds(VkCommandBuffer commands, const glsl::GridBoundsPush& push);

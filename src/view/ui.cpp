@@ -187,7 +187,15 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
         ImVec2(std::min(kSettingsWidth, viewport->Size.x), std::max(viewport->Size.y - state.statusBarHeight, 60.0f)),
         ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(1.0f);
-    ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    const bool open =
+        ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    // The image goes right of the open settings (Viewer::imageArea); collapsed, only the title bar
+    // covers it.
+    state.settingsWidth = open ? ImGui::GetWindowWidth() : 0.0f;
+    if (!open) {
+        ImGui::End();
+        return;
+    }
     // Controls take what the labels (up to "local shadow map") leave.
     ImGui::PushItemWidth(-ImGui::CalcTextSize("local shadow map  ").x);
     presetRow(state);

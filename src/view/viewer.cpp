@@ -94,6 +94,7 @@ private:
     void buildRenderer();
     void recreateSwapchain();
     void resizeRenderer();
+    VkRect2D imageArea() const;
     VkExtent2D drawableExtent(VkExtent2D window) const;
     void drawFrame(bool drawUi, const std::string& screenshotPath);
     void writeScreenshot(const Buffer& pixels, const std::string& path);
@@ -126,7 +127,8 @@ private:
     bool swapchainStale_ = false;
     bool shownVsync_ = true;
     float shownRenderScale_ = 1.0f;
-    bool imageStale_ = true;  // the renderer must run this frame
+    VkRect2D shownImageArea_{};  // the part of the window the image was sized for
+    bool imageStale_ = true;     // the renderer must run this frame
     bool quit_ = false;
     uint64_t iteration_ = 0;
     uint32_t framesDrawn_ = 0;
@@ -227,11 +229,24 @@ void Viewer::recreateSwapchain() {
     resizeRenderer();
 }
 
-// The renderer draws at the window's size × the render scale; the present pass scales it up.
+// The image takes the window right of the docked settings, as an editor's viewport does, so the
+// panel covers none of it; the aspect ratio follows. Collapsed or hidden settings leave the whole
+// window to it, and so does a window where the image would get less than a third of the width
+// (there the settings cover the image, and collapse with their title bar's arrow).
+VkRect2D Viewer::imageArea() const {
+    const VkExtent2D window = swapchain_->extent;
+    const uint32_t panel = uint32_t(std::lround(std::max(state_.settingsWidth, 0.0f)));
+    if (panel == 0 || panel >= window.width || 3 * (window.width - panel) < window.width) return {{0, 0}, window};
+    return {{int32_t(panel), 0}, {window.width - panel, window.height}};
+}
+
+// The renderer draws at the image area's size × the render scale; the present pass scales it up.
 void Viewer::resizeRenderer() {
     shownRenderScale_ = state_.renderScale;
-    state_.settings.image.width = std::max(1u, uint32_t(std::lround(swapchain_->extent.width * state_.renderScale)));
-    state_.settings.image.height = std::max(1u, uint32_t(std::lround(swapchain_->extent.height * state_.renderScale)));
+    shownImageArea_ = imageArea();
+    const VkExtent2D area = shownImageArea_.extent;
+    state_.settings.image.width = std::max(1u, uint32_t(std::lround(area.width * state_.renderScale)));
+    state_.settings.image.height = std::max(1u, uint32_t(std::lround(area.height * state_.renderScale)));
     if (renderer_) {
         renderer_->resize(state_.settings.image);  // the voxels are kept
         imageStale_ = true;
@@ -572,7 +587,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     tonemap.exposure = state_.exposure;
     const DebugView view = renderer_->settings().shading.debugView;
     tonemap.toneCurve = view == DebugView::None || view == DebugView::VoxelRadiance;
-    presentPass_->begin(frame.commands, imageIndex, extent, renderer_->output(), tonemap);
+    presentPass_->begin(frame.commands, imageIndex, extent, shownImageArea_, renderer_->output(), tonemap);
     if (state_.showGridBounds) presentPass_->drawGridBounds(frame.commands, gridBoundsPush());
     if (drawUi) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.commands);
     presentPass_->end(frame.commands);
@@ -675,6 +690,7 @@ bool Viewer::loopIteration() {
     if (swapchainStale_) recreateSwapchain();
 
     const UiFacts uiFacts = facts();
+    state_.settingsWidth = 0.0f;  // drawSettingsWindow sets it while the settings are open
     if (state_.showPanels) {
         drawStatusBar(state_);
         drawSettingsWindow(state_, uiFacts);
@@ -684,6 +700,10 @@ bool Viewer::loopIteration() {
     drawWarningsWindow(state_);
     drawErrorWindow(state_);
     ImGui::Render();
+    const VkRect2D area = imageArea();
+    if (area.offset.x != shownImageArea_.offset.x || area.extent.width != shownImageArea_.extent.width ||
+        area.extent.height != shownImageArea_.extent.height)
+        resizeRenderer();  // the settings opened, closed or were hidden: the voxels stay
 
     if (imageStale_ || renderer_->settling() || options_.renderEveryFrame ||
         !sameCamera(renderer_->camera(), lastRenderedCamera_)) {

@@ -46,6 +46,7 @@ struct ViewerState {
     bool showHint = true;             // that one-line hint (--no-guide: neither)
     bool guideOpened = false;
     float statusBarHeight = 0.0f;  // last frame's, so the settings window ends above it
+    float settingsWidth = 0.0f;    // this frame's docked settings, 0 when collapsed or hidden
     bool showProfiler = true;
     bool wasNarrow = false;  // the window was too narrow for the settings and the profiler side by side
     bool showPanels = true;

@@ -416,6 +416,35 @@ TEST_F(View, TheGridBoundsKeyDrawsTheVoxelGridsBoxAroundTheScene) {
     EXPECT_LT(changedFraction(plain, screenshot("off.png")), 0.001) << "G again hides the box";
 }
 
+// Pixels of `png` whose red channel clearly dominates: the Cornell box's left wall.
+size_t redPixels(const Png& png) {
+    size_t count = 0;
+    for (size_t i = 0; i + 2 < png.rgb.size(); i += 3)
+        count += png.rgb[i] > 100 && png.rgb[i + 1] < png.rgb[i] / 3 && png.rgb[i + 2] < png.rgb[i] / 3;
+    return count;
+}
+
+TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
+    // 960×540 (the window), settings docked on the left (370 px): the image is drawn beside
+    // them, so the red wall, which they covered, shows; under them the window is black. A click on
+    // the title bar's arrow collapses the settings and the image takes the whole window again, as
+    // Tab does; re-sizing the image keeps the voxels.
+    const std::string events =
+        "2 screenshot open.png; 3 screenshot open_ui.png ui; 4 mouse 10 10; 5 button left down; 6 button left up;"
+        "8 screenshot collapsed.png; 9 key tab press; 10 screenshot hidden.png; 11 quit";
+    ASSERT_EQ(runViewer("--width 960 --height 540 --events '" + events + "'"), 0) << log;
+    const Png open = screenshot("open.png"), openUi = screenshot("open_ui.png");
+    const Png collapsed = screenshot("collapsed.png");
+    ASSERT_FALSE(collapsed.rgb.empty()) << log;
+    EXPECT_EQ(meanValue(crop(open, 0, 0, 360, 540)), 0.0) << "the image is drawn under the settings";
+    EXPECT_GT(redPixels(crop(openUi, 380, 0, 960, 480)), 2000u) << "the red wall is not beside the settings";
+    EXPECT_GT(meanValue(crop(collapsed, 0, 30, 360, 540)), 20.0) << "collapsed settings leave the window to the image";
+    EXPECT_LT(changedFraction(collapsed, screenshot("hidden.png")), 0.001) << "collapsed or hidden, the same image";
+    EXPECT_NE(log.find("ran gbuffer diffuse-cones shade resolve; skipped shadow voxelize inject mips bounce"),
+              std::string::npos)
+        << log;
+}
+
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
     EXPECT_EQ(runViewer("--events '1 jump'"), 1);
     EXPECT_NE(log.find("unknown action 'jump'"), std::string::npos) << log;
