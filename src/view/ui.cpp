@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 #include <vector>
 
 #include "render/presets.h"
@@ -73,6 +75,28 @@ static bool flowingButton(const char* label, bool first) {
     return ImGui::Button(label);
 }
 
+// The recent files, newest first: a click opens one; a file that is gone is greyed and does nothing.
+static void recentFilesList(ViewerState& state) {
+    if (state.recentFiles.empty()) return;
+    ImGui::TextDisabled("recent:");
+    for (size_t i = 0; i < state.recentFiles.size(); ++i) {
+        const std::string& path = state.recentFiles[i];
+        const std::filesystem::path file(path);
+        std::error_code error;
+        const bool present = std::filesystem::is_regular_file(file, error);
+        // The name first, then whether it is gone: a long folder is cut at the window's edge.
+        const std::string folder = "  " + file.parent_path().string();
+        ImGui::PushID(int(i));
+        if (present) {
+            if (ImGui::Selectable((file.filename().string() + folder).c_str())) state.requestedScene = path;
+        } else {
+            ImGui::TextDisabled("%s (missing)%s", file.filename().string().c_str(), folder.c_str());
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
+        ImGui::PopID();
+    }
+}
+
 static void sceneSection(ViewerState& state) {
     if (!ImGui::CollapsingHeader("Scene")) return;
     ImGui::Text("%s", state.sceneName.c_str());
@@ -82,12 +106,16 @@ static void sceneSection(ViewerState& state) {
         first = false;
     }
     const ImGuiStyle& style = ImGui::GetStyle();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Load").x -
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Open").x -
                             2.0f * style.FramePadding.x - style.ItemSpacing.x);
     ImGui::InputText("##glTF path", state.scenePathField, sizeof state.scenePathField);
+    // Enter in the field opens, as the button does.
+    const bool enter = ImGui::IsItemDeactivated() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
     ImGui::SameLine();
-    if (ImGui::Button("Load") && state.scenePathField[0] != '\0') state.requestedScene = state.scenePathField;
+    if ((ImGui::Button("Open") || enter) && state.scenePathField[0] != '\0')
+        state.requestedScene = state.scenePathField;
     wrappedNote("a .gltf/.glb path, or drop the file on the window");
+    recentFilesList(state);
 }
 
 static void shadingSection(ViewerState& state, const UiFacts& facts) {
@@ -375,7 +403,8 @@ void drawGuideWindow(ViewerState& state) {
         {"F12 or P", "screenshot (PNG in the current folder)"},
         {"Tab", "hide or show the panels"},
         {"F1 or H", "this guide"},
-        {"drop a file", "load a .gltf/.glb scene"},
+        {"drop a file",
+         "load a .gltf/.glb scene; or type its path under Settings > Scene, which lists the recent ones"},
         {"Esc", "quit"},
     };
     if (ImGui::BeginTable("controls", 2)) {

@@ -11,7 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 
 #include "error.h"
 #include "gpu/commands.h"
@@ -24,6 +26,7 @@
 #include "scene/load.h"
 #include "view/controls.h"
 #include "view/present_pass.h"
+#include "view/recent_files.h"
 #include "view/swapchain.h"
 #include "view/ui.h"
 #include "view/viewer_state.h"
@@ -90,6 +93,7 @@ private:
     void applyRequests();
     void applyLightEdits();
     void showScene();
+    void rememberSceneFile(const std::string& name);
     bool loadScene(const std::string& name);
     void buildRenderer();
     void recreateSwapchain();
@@ -125,6 +129,7 @@ private:
     VkExtent2D shownFramebuffer_{};  // the window's framebuffer size when the swapchain was made
     static constexpr uint64_t kSwapchainImagesAtMost = 4;
     bool swapchainStale_ = false;
+    bool recentFilesWarned_ = false;  // the list could not be written: said once
     bool shownVsync_ = true;
     float shownRenderScale_ = 1.0f;
     VkRect2D shownImageArea_{};  // the part of the window the image was sized for
@@ -181,6 +186,8 @@ Viewer::Viewer(ViewerOptions options)
     state_.sunIndex = ensureSun(scene_);
     buildRenderer();
     showScene();
+    state_.recentFiles = readRecentFiles(recentFilesPath());
+    rememberSceneFile(state_.sceneName);
     std::printf("vct view: %s, %zu triangles, on %s (%s)\n", state_.sceneName.c_str(), scene_.triangleCount(),
                 context_->deviceName().c_str(), presentModeName(swapchain_->presentMode));
     if (softwarePreset) std::printf("vct view: %s\n", state_.notice.c_str());
@@ -294,7 +301,21 @@ bool Viewer::loadScene(const std::string& name) {
     for (const std::string& warning : scene_.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     state_.warnings = scene_.warnings;
     showScene();
+    rememberSceneFile(name);
     return true;
+}
+
+// A scene opened from a file (not a built-in name) goes first in the recent files, which are saved
+// at once: the viewer may end by a crash of the driver or the window system.
+void Viewer::rememberSceneFile(const std::string& name) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(name, error)) return;
+    rememberRecentFile(state_.recentFiles, name);
+    const std::string problem = writeRecentFiles(recentFilesPath(), state_.recentFiles);
+    if (problem.empty() || recentFilesWarned_) return;
+    recentFilesWarned_ = true;
+    std::fprintf(stderr, "warning: %s\n", problem.c_str());
+    state_.warnings.push_back(problem);
 }
 
 // The panels and the camera start from the scene the renderer was just built for.
@@ -345,6 +366,8 @@ void Viewer::applyScript() {
             pendingScreenshots_.emplace_back(a[0], a.size() > 1);
         } else if (event.action == "drop") {
             input_.droppedFiles.push_back(a[0]);
+        } else if (event.action == "type") {
+            for (const char character : a[0]) ImGui::GetIO().AddInputCharacter(static_cast<unsigned char>(character));
         } else if (event.action == "light") {
             // What the scene panel's intensity field writes (the sun's is the sun control's).
             const float index = parseNumber(event, 0), intensity = parseNumber(event, 2);

@@ -54,9 +54,10 @@ struct ViewerState {
     bool vsync = true;
     bool screenshotWithUi = false;
 
-    std::string sceneName;          // what is loaded now
-    char scenePathField[512] = {};  // the panel's text field
-    std::string requestedScene;     // set by the panel or a drop; loaded by the main loop
+    std::string sceneName;                 // what is loaded now
+    char scenePathField[512] = {};         // the panel's text field
+    std::string requestedScene;            // set by the panel or a drop; loaded by the main loop
+    std::vector<std::string> recentFiles;  // scenes opened from files, newest first (recent_files.h)
     bool requestScreenshot = false;
     bool requestCameraReset = false;
     bool requestOrbitToggle = false;

@@ -64,6 +64,18 @@ double changedFraction(const Png& a, const Png& b) {
     return double(changed) / double(a.rgb.size() / 3);
 }
 
+// A glTF file of one triangle whose base colour is the texture "texture.png" beside it.
+void writeTexturedTriangle(const fs::path& file) {
+    std::ofstream(file)
+        << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
+        << R"(AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],)"
+        << R"("max":[1,1,1]}],"images":[{"uri":"texture.png"}],"textures":[{"source":0}],)"
+        << R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
+        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
+        << R"("scenes":[{"nodes":[0]}],"scene":0})";
+}
+
 class View : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -73,16 +85,16 @@ protected:
         fs::create_directories(directory);
     }
 
-    // Runs `vct view` in `directory` on a small window with 64³ voxels and one bounce (so that a
+    // Runs `vct view` in `directory` (which is its XDG_CONFIG_HOME too: the recent files go there) on a small window with 64³ voxels and one bounce (so that a
     // frame changes only what the script changed: converging bounces brighten the first frames,
     // which View.ProgressiveBouncesSettleAndThenTheImageStays checks); returns the exit code.
     // `hint`: start with the status bar's one-line hint to the guide, as a user does (the tests
     // otherwise pass --no-guide, so that screenshots with the panels show only what they test).
     int runViewer(const std::string& arguments, bool hint = false) {
         const fs::path logPath = directory / "log.txt";
-        const std::string command = "cd '" + directory.string() +
-                                    "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
-                                    " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
+        const std::string command = "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp XDG_CONFIG_HOME='" +
+                                    directory.string() +
+                                    "' " XVFB_RUN " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
                                     std::string(hint ? "" : "--no-guide ") +
                                     "--voxels 64 --shadow-map 512 --bounces 1 --width 320 --height 180 " + arguments +
                                     " > '" + logPath.string() + "' 2>&1";
@@ -307,14 +319,7 @@ TEST_F(View, SceneWarningsAreShownInTheWindow) {
     // A triangle whose base-colour texture is missing loads with a warning: on stderr, and in a
     // window. With the texture there (1×1 white: the same colour as the fallback, so the same
     // image) there is no warning, and the panels' screenshots differ only by that window.
-    std::ofstream(directory / "textured.gltf")
-        << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
-        << R"(AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
-        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],)"
-        << R"("max":[1,1,1]}],"images":[{"uri":"texture.png"}],"textures":[{"source":0}],)"
-        << R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
-        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
-        << R"("scenes":[{"nodes":[0]}],"scene":0})";
+    writeTexturedTriangle(directory / "textured.gltf");
     // --light-dir: the file has no light, and the default sun's warning would be one more.
     const std::string arguments =
         "--scene textured.gltf --light-dir 0,-1,-1 --width 640 --height 360 --events '2 screenshot ";
@@ -443,6 +448,55 @@ TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
     EXPECT_NE(log.find("ran gbuffer diffuse-cones shade resolve; skipped shadow voxelize inject mips bounce"),
               std::string::npos)
         << log;
+}
+
+void writeWhitePixel(const fs::path& file) {
+    const unsigned char white[3] = {255, 255, 255};
+    ASSERT_TRUE(stbi_write_png(file.c_str(), 1, 1, 3, white, 3));
+}
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// 640×360: a click on the "Scene" header opens the section; its path field and Open button, and
+// below them the recent files, are at these heights.
+constexpr const char* openSceneSection = "2 mouse 50 59; 3 button left down; 4 button left up; ";
+
+TEST_F(View, AFileTypedIntoTheSceneFieldOpensAndGoesToTheRecentFiles) {
+    writeTexturedTriangle(directory / "textured.gltf");
+    writeWhitePixel(directory / "texture.png");
+    const std::string events = std::string(openSceneSection) +
+                               "1 screenshot before.png; 5 mouse 150 168; 6 button left down; 7 button left up;"
+                               "8 type textured.gltf; 9 mouse 330 168; 10 button left down; 11 button left up;"
+                               "13 screenshot after.png; 14 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    EXPECT_NE(log.find("loading textured.gltf\n"), std::string::npos) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << "still the Cornell box";
+    // Kept as an absolute path, so it opens from any folder, in $XDG_CONFIG_HOME/vct/recent.
+    EXPECT_EQ(readText(directory / "vct" / "recent"), (directory / "textured.gltf").string() + "\n") << log;
+}
+
+TEST_F(View, ARecentFileOpensWithAClickAndAMissingOneIsGreyedAndInert) {
+    writeTexturedTriangle(directory / "textured.gltf");
+    writeWhitePixel(directory / "texture.png");
+    const std::string gone = (directory / "gone.gltf").string(), kept = (directory / "textured.gltf").string();
+    fs::create_directories(directory / "vct");
+    std::ofstream(directory / "vct" / "recent") << gone << "\n" << kept << "\n";
+    // The list's first row is the missing file, the second the one that is there.
+    const std::string events = std::string(openSceneSection) +
+                               "1 screenshot before.png; 5 mouse 100 236; 6 button left down; 7 button left up;"
+                               "8 screenshot still.png; 8 screenshot list.png ui; 9 mouse 100 253;"
+                               "10 button left down; 11 button left up; 13 screenshot after.png; 14 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    EXPECT_EQ(log.find("loading " + gone), std::string::npos) << log;
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("still.png")), 0.001);
+    EXPECT_NE(log.find("loading " + kept + "\n"), std::string::npos) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << "still the Cornell box";
+    EXPECT_EQ(readText(directory / "vct" / "recent"), kept + "\n" + gone + "\n") << "opened moves it first";
 }
 
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
