@@ -392,9 +392,9 @@ void drawGuideWindow(ViewerState& state) {
         {"R", "reset to the scene camera"},
         {"arrow keys", "move the sun (left/right azimuth, up/down elevation)"},
         {"Ctrl + left drag", "move the sun"},
-        {"1 .. 7",
+        {"1 .. 8",
          "toggle direct diffuse, direct specular, indirect diffuse, indirect specular, ambient occlusion, emission, "
-         "shadows"},
+         "shadows, area lights"},
         {"M", "mode: full, direct, indirect"},
         {"V", "next view: lit, base colour, normal, depth, AO, voxels"},
         {"[ / ]", "voxel mip shown by the voxel views"},
