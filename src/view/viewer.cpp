@@ -524,6 +524,7 @@ void Viewer::applyLightEdits() {
     } catch (const Error& error) {
         // E.g. brighter than the voxels' float16 can hold: the renderer keeps its lights.
         state_.error = error.what();
+        std::fprintf(stderr, "vct view: %s (the light is kept as it was)\n", error.what());
         state_.lights = renderer_->lights();
         state_.sun.intensity = state_.lights.at(state_.sunIndex).intensity;
         shownSun_ = state_.sun;

@@ -64,6 +64,18 @@ double changedFraction(const Png& a, const Png& b) {
     return double(changed) / double(a.rgb.size() / 3);
 }
 
+void writeWhitePixel(const fs::path& file) {
+    const unsigned char white[3] = {255, 255, 255};
+    ASSERT_TRUE(stbi_write_png(file.c_str(), 1, 1, 3, white, 3));
+}
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 // A glTF file of one triangle whose base colour is the texture "texture.png" beside it.
 void writeTexturedTriangle(const fs::path& file) {
     std::ofstream(file)
@@ -369,6 +381,39 @@ TEST_F(View, ALightEntryInAScriptSetsItsIntensity) {
     EXPECT_LT(meanValue(screenshot("no_sun.png")), bright - 2.0) << log;
 }
 
+TEST_F(View, ALightTheRendererRefusesIsKeptAsItWasAndSaidSo) {
+    // A negative intensity, or one past what the voxels' float16 holds: the window shows why, the
+    // light stays as it was (the same image), and the viewer goes on.
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 2 light 0 intensity -1; 3 screenshot negative.png;"
+                               "4 light 0 intensity 1e30; 5 screenshot huge.png; 6 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_NE(log.find("has a negative intensity or colour (the light is kept as it was)"), std::string::npos) << log;
+    EXPECT_NE(log.find("brighter than this renderer represents"), std::string::npos) << log;
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("negative.png")), 0.001);
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("huge.png")), 0.001);
+}
+
+TEST_F(View, RecentFilesThatCannotBeSavedAreAWarningInTheWindow) {
+    // A file where the config folder "vct" should be: the list cannot be written. The scene opens
+    // all the same, and the warning is on stderr and in the window.
+    writeTexturedTriangle(directory / "textured.gltf");
+    writeWhitePixel(directory / "texture.png");
+    std::ofstream(directory / "vct") << "not a folder";
+    ASSERT_EQ(runViewer("--scene textured.gltf --light-dir 0,-1,-1 --width 640 --height 360 --events '"
+                        "2 screenshot plain.png; 3 screenshot panels.png ui; 4 quit'"),
+              0)
+        << log;
+    EXPECT_NE(log.find("warning: cannot keep the recent files in '" + (directory / "vct" / "recent").string() + "'"),
+              std::string::npos)
+        << log;
+    // The warnings window is centred on the window, over the image right of the settings.
+    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 380, 100, 640, 300),
+                              crop(screenshot("panels.png"), 380, 100, 640, 300)),
+              0.05)
+        << "the warning is not shown in the window";
+}
+
 TEST_F(View, ALightEntryForALightTheSceneLacksIsAnError) {
     EXPECT_EQ(runViewer("--events '1 light 7 intensity 2; 2 quit'"), 1) << log;
     EXPECT_NE(log.find("the scene has no light 7 (it has 2, counted from 0)"), std::string::npos) << log;
@@ -448,18 +493,6 @@ TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
     EXPECT_NE(log.find("ran gbuffer diffuse-cones shade resolve; skipped shadow voxelize inject mips bounce"),
               std::string::npos)
         << log;
-}
-
-void writeWhitePixel(const fs::path& file) {
-    const unsigned char white[3] = {255, 255, 255};
-    ASSERT_TRUE(stbi_write_png(file.c_str(), 1, 1, 3, white, 3));
-}
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 // 640×360: a click on the "Scene" header opens the section; its path field and Open button, and
