@@ -101,7 +101,7 @@ private:
     VkRect2D imageArea() const;
     VkExtent2D drawableExtent(VkExtent2D window) const;
     void drawFrame(bool drawUi, const std::string& screenshotPath);
-    void writeScreenshot(const Buffer& pixels, const std::string& path);
+    void writeScreenshot(const Buffer& pixels, VkExtent2D extent, const std::string& path);
     glsl::GridBoundsPush gridBoundsPush() const;
     UiFacts facts() const;
     void printFrameStats(const FrameStats& stats) const;
@@ -547,8 +547,7 @@ UiFacts Viewer::facts() const {
     return facts;
 }
 
-void Viewer::writeScreenshot(const Buffer& pixels, const std::string& path) {
-    const VkExtent2D extent = swapchain_->extent;
+void Viewer::writeScreenshot(const Buffer& pixels, VkExtent2D extent, const std::string& path) {
     const bool bgra = swapchain_->format == VK_FORMAT_B8G8R8A8_UNORM;
     const uint8_t* source = static_cast<const uint8_t*>(pixels.mapped);
     std::vector<uint8_t> rgb(size_t(extent.width) * extent.height * 3);
@@ -595,10 +594,12 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
 
     const bool capture = !screenshotPath.empty() && swapchain_->canCopyFrom;
     const VkExtent2D extent = swapchain_->extent;
+    // With the UI, the whole window; without, the image alone (right of the open settings).
+    const VkRect2D captured = drawUi ? VkRect2D{{0, 0}, extent} : shownImageArea_;
     Buffer pixels;
     if (capture)
-        pixels =
-            Buffer(*context_, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        pixels = Buffer(*context_, VkDeviceSize(captured.extent.width) * captured.extent.height * 4,
+                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
 
     VK_CHECK(vkResetFences(context_->device, 1, &frame.fence));
     VK_CHECK(vkResetCommandBuffer(frame.commands, 0));
@@ -624,7 +625,8 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
                      VK_ACCESS_2_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {extent.width, extent.height, 1};
+        region.imageOffset = {captured.offset.x, captured.offset.y, 0};
+        region.imageExtent = {captured.extent.width, captured.extent.height, 1};
         vkCmdCopyImageToBuffer(frame.commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, pixels.buffer, 1, &region);
         imageBarrier(frame.commands, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
@@ -659,7 +661,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     const std::vector<PassTime> times = presentTimer_->results();
     if (!times.empty()) state_.history.presentMilliseconds = float(times.front().milliseconds);
     ++framesDrawn_;
-    if (capture) writeScreenshot(pixels, screenshotPath);
+    if (capture) writeScreenshot(pixels, captured.extent, screenshotPath);
     else if (!screenshotPath.empty()) state_.notice = "this window system cannot copy from its images";
 }
 

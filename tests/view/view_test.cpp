@@ -140,7 +140,13 @@ TEST_F(View, StartsRendersAndSavesAScreenshotOfTheWindowSize) {
 TEST_F(View, ScreenshotWithTheUiShowsThePanels) {
     ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot plain.png --frames 2"), 0) << log;
     ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot ui.png --frames 2 --screenshot-ui"), 0) << log;
-    EXPECT_GT(changedFraction(screenshot("plain.png"), screenshot("ui.png")), 0.2);
+    // Without the UI, the image alone: what is right of the settings (370 px). With it, the window,
+    // whose left holds the settings and whose right the same image.
+    const Png plain = screenshot("plain.png"), ui = screenshot("ui.png");
+    EXPECT_EQ(plain.width, 640 - 370) << log;
+    EXPECT_EQ(ui.width, 640);
+    EXPECT_LT(changedFraction(crop(plain, 0, 0, 270, 300), crop(ui, 370, 0, 640, 300)), 0.001);
+    EXPECT_GT(changedFraction(crop(plain, 0, 0, 270, 300), crop(ui, 0, 0, 270, 300)), 0.2);
 }
 
 TEST_F(View, FlyingAndLookingMoveTheCamera) {
@@ -304,12 +310,12 @@ TEST_F(View, StartsWithAHintNotTheGuideAndF1OpensTheGuide) {
     const std::string events =
         "2 screenshot plain.png; 3 screenshot panels.png ui; 4 key F1 press; 5 screenshot guide.png ui; 6 quit";
     ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'", true), 0) << log;
-    const Png plain = crop(screenshot("plain.png"), 400, 60, 620, 280);
+    const Png plain = crop(screenshot("plain.png"), 30, 60, 250, 280);  // the image alone, from x = 370
     ASSERT_FALSE(plain.rgb.empty()) << log;
     EXPECT_LT(changedFraction(plain, crop(screenshot("panels.png"), 400, 60, 620, 280)), 0.001) << log;
     EXPECT_GT(changedFraction(plain, crop(screenshot("guide.png"), 400, 60, 620, 280)), 0.3) << log;
     // The hint is a line at the bottom, over the image.
-    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 400, 340, 640, 360),
+    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 30, 340, 270, 360),
                               crop(screenshot("panels.png"), 400, 340, 640, 360)),
               0.05)
         << log;
@@ -358,8 +364,7 @@ TEST_F(View, DimmingALightInTheScenePanelRerunsOnlyTheLightPasses) {
         "7 button left down; 8 mouse 5 123; 9 button left up; 10 screenshot panel.png ui; 11 screenshot after.png;"
         "12 quit";
     ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
-    const Png before = crop(screenshot("before.png"), 400, 0, 640, 330);
-    const Png after = crop(screenshot("after.png"), 400, 0, 640, 330);
+    const Png before = screenshot("before.png"), after = screenshot("after.png");  // the image alone
     ASSERT_FALSE(after.rgb.empty()) << log;
     EXPECT_LT(meanValue(after), meanValue(before) - 10.0) << "the point light still shines\n" << log;
     EXPECT_NE(log.find("ran shadow inject mips gbuffer diffuse-cones shade resolve; skipped voxelize bounce\n"),
@@ -408,7 +413,7 @@ TEST_F(View, RecentFilesThatCannotBeSavedAreAWarningInTheWindow) {
               std::string::npos)
         << log;
     // The warnings window is centred on the window, over the image right of the settings.
-    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 380, 100, 640, 300),
+    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 10, 100, 270, 300),
                               crop(screenshot("panels.png"), 380, 100, 640, 300)),
               0.05)
         << "the warning is not shown in the window";
@@ -476,7 +481,8 @@ size_t redPixels(const Png& png) {
 
 TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
     // 960×540 (the window), settings docked on the left (370 px): the image is drawn beside
-    // them, so the red wall, which they covered, shows; under them the window is black. A click on
+    // them, so the red wall, which they covered, shows; a screenshot without the UI is that image
+    // alone (the profiler covers the top right of the window's, above y = 350). A click on
     // the title bar's arrow collapses the settings and the image takes the whole window again, as
     // Tab does; re-sizing the image keeps the voxels.
     const std::string events =
@@ -486,7 +492,9 @@ TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
     const Png open = screenshot("open.png"), openUi = screenshot("open_ui.png");
     const Png collapsed = screenshot("collapsed.png");
     ASSERT_FALSE(collapsed.rgb.empty()) << log;
-    EXPECT_EQ(meanValue(crop(open, 0, 0, 360, 540)), 0.0) << "the image is drawn under the settings";
+    EXPECT_EQ(open.width, 960 - 370) << log;
+    EXPECT_LT(changedFraction(crop(open, 0, 360, 590, 480), crop(openUi, 370, 360, 960, 480)), 0.001)
+        << "the image is not right of the settings";
     EXPECT_GT(redPixels(crop(openUi, 380, 0, 960, 480)), 2000u) << "the red wall is not beside the settings";
     EXPECT_GT(meanValue(crop(collapsed, 0, 30, 360, 540)), 20.0) << "collapsed settings leave the window to the image";
     EXPECT_LT(changedFraction(collapsed, screenshot("hidden.png")), 0.001) << "collapsed or hidden, the same image";
