@@ -1,7 +1,7 @@
 #version 460
 // One colour for the voxel grid's edges (grid_bounds.vert.glsl).
 #extension GL_GOOGLE_include_directive : require
-#include "grid_bounds.h"
+#include "present.h"
 
 layout(push_constant) uniform Push { GridBoundsPush push; };
 layout(location = 0) out vec4 color;

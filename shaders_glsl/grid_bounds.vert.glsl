@@ -2,7 +2,7 @@
 // The voxel grid's 12 edges as a line list of 24 vertices; no vertex buffer. Corner c of the box
 // takes bit 0 of c from x, bit 1 from y, bit 2 from z (0 = min, 1 = max).
 #extension GL_GOOGLE_include_directive : require
-#include "grid_bounds.h"
+#include "present.h"
 
 layout(push_constant) uniform Push { GridBoundsPush push; };
 

@@ -5,13 +5,6 @@
 
 namespace vct {
 
-struct TonemapPush {
-    float areaOffset[2];
-    float inverseAreaSize[2];
-    float exposure;
-    uint32_t applyToneCurve;
-};
-
 static VkRenderPass createRenderPass(GpuContext& context, VkFormat format) {
     VkAttachmentDescription attachment{};
     attachment.format = format;
@@ -175,10 +168,9 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
     DescriptorPush()
         .sampledImage(0, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.layout);
-    const TonemapPush push{{float(area.offset.x), float(area.offset.y)},
-                           {1.0f / float(area.extent.width), 1.0f / float(area.extent.height)},
-                           params.exposure,
-                           params.toneCurve ? 1u : 0u};
+    const glsl::TonemapPush push{glm::vec2(float(area.offset.x), float(area.offset.y)),
+                                 glm::vec2(1.0f / float(area.extent.width), 1.0f / float(area.extent.height)),
+                                 params.exposure, params.toneCurve ? 1u : 0u};
     vkCmdPushConstants(commands, tonemap_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDraw(commands, 3, 1, 0, 0);
 }

@@ -11,7 +11,7 @@
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
-#include "grid_bounds.h"
+#include "present.h"
 #include "view/swapchain.h"
 
 namespace vct {
