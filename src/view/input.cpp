@@ -70,8 +70,8 @@ int keyFromName(const std::string& rawName) {
 
 static size_t argumentCount(const std::string& action) {
     static const std::map<std::string, size_t> counts = {
-        {"key", 2},     {"mouse", 2},   {"button", 2},     {"scroll", 1}, {"resize", 2},
-        {"iconify", 0}, {"restore", 0}, {"screenshot", 1}, {"drop", 1},   {"quit", 0}};
+        {"key", 2},     {"mouse", 2},      {"button", 2}, {"scroll", 1}, {"resize", 2}, {"iconify", 0},
+        {"restore", 0}, {"screenshot", 1}, {"drop", 1},   {"quit", 0},   {"light", 3},  {"type", 1}};
     const auto found = counts.find(action);
     return found == counts.end() ? size_t(-1) : found->second;
 }
@@ -105,6 +105,8 @@ std::vector<ScriptEvent> parseScript(const std::string& text) {
             if (how != "down" && how != "up" && how != "press")
                 throw Error("script entry '" + line + "': a key goes down, up or press");
         }
+        if (event.action == "light" && event.arguments[1] != "intensity")
+            throw Error("script entry '" + line + "': a light's intensity is what a script sets");
         if (event.action == "button" && event.arguments[0] != "left" && event.arguments[0] != "right")
             throw Error("script entry '" + line + "': the button is left or right");
         events.push_back(event);

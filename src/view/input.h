@@ -8,8 +8,12 @@
 //   button left|right down|up
 //   scroll DY
 //   resize W H | iconify | restore
-//   screenshot FILE.png [ui]   the shown image, with the UI when "ui" is given
+//   screenshot FILE.png [ui]   the image alone (beside the open settings), or the whole window with the
+//                              UI when "ui" is given
 //   drop FILE                  as if FILE were dropped on the window
+//   type TEXT                  TEXT as typed characters, into the text field that has the focus
+//   light INDEX intensity X    what the scene panel's intensity field does to the scene's light INDEX
+//                              (counted from 0, as the panel lists them; cd, or lux for the sun)
 //   quit
 // FRAME counts loop iterations from 0, including iterations where a minimised window draws nothing.
 #pragma once

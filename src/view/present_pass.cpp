@@ -5,17 +5,11 @@
 
 namespace vct {
 
-struct TonemapPush {
-    float inverseTargetSize[2];
-    float exposure;
-    uint32_t applyToneCurve;
-};
-
 static VkRenderPass createRenderPass(GpuContext& context, VkFormat format) {
     VkAttachmentDescription attachment{};
     attachment.format = format;
     attachment.samples = VK_SAMPLE_COUNT_1_BIT;
-    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the full-screen triangle covers every pixel
+    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // the image may leave part of the window (beside the settings)
     attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -46,9 +40,11 @@ static VkRenderPass createRenderPass(GpuContext& context, VkFormat format) {
     return renderPass;
 }
 
-// gpu/pipelines.h makes pipelines for dynamic rendering; this one belongs to a VkRenderPass.
-static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout layout, VkRenderPass renderPass,
-                                        const ShaderCode& vertexCode, const ShaderCode& fragmentCode) {
+// gpu/pipelines.h makes pipelines for dynamic rendering; these belong to a VkRenderPass. The
+// tone map draws a full-screen triangle, the grid bounds a line list; neither blends.
+static VkPipeline createPresentPipeline(GpuContext& context, VkPipelineLayout layout, VkRenderPass renderPass,
+                                        const ShaderCode& vertexCode, const ShaderCode& fragmentCode,
+                                        VkPrimitiveTopology topology) {
     const VkShaderModule vertex = createShaderModule(context, vertexCode);
     const VkShaderModule fragment = createShaderModule(context, fragmentCode);
     VkPipelineShaderStageCreateInfo stages[2]{};
@@ -68,7 +64,7 @@ static VkPipeline createTonemapPipeline(GpuContext& context, VkPipelineLayout la
                  nullptr};
     const VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    inputAssembly.topology = topology;
     VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
@@ -115,7 +111,13 @@ PresentPass::PresentPass(GpuContext& context, VkFormat swapchainFormat)
     const ShaderCode vertex = loadShader("fullscreen.vert"), fragment = loadShader("tonemap.frag");
     const ShaderLayout layout = createShaderLayout(context, {vertex, fragment});
     tonemap_ = Pipeline(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // freed on a throw
-    tonemap_.pipeline = createTonemapPipeline(context, layout.layout, renderPass, vertex, fragment);
+    tonemap_.pipeline = createPresentPipeline(context, layout.layout, renderPass, vertex, fragment,
+                                              VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST);
+    const ShaderCode boxVertex = loadShader("grid_bounds.vert"), boxFragment = loadShader("grid_bounds.frag");
+    const ShaderLayout boxLayout = createShaderLayout(context, {boxVertex, boxFragment});
+    gridBounds_ = Pipeline(context, VK_NULL_HANDLE, boxLayout.layout, boxLayout.setLayout);
+    gridBounds_.pipeline = createPresentPipeline(context, boxLayout.layout, renderPass, boxVertex, boxFragment,
+                                                 VK_PRIMITIVE_TOPOLOGY_LINE_LIST);
 }
 
 PresentPass::~PresentPass() {
@@ -143,8 +145,8 @@ void PresentPass::createFramebuffers(const Swapchain& swapchain) {
     }
 }
 
-void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, const GpuImage& radiance,
-                        const TonemapParams& params) {
+void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, VkRect2D area,
+                        const GpuImage& radiance, const TonemapParams& params) {
     // The renderer's resolve wrote the image in an earlier submission: make it visible here.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
@@ -152,19 +154,31 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
     info.renderPass = renderPass;
     info.framebuffer = framebuffers_.at(imageIndex);
     info.renderArea = {{0, 0}, extent};
+    const VkClearValue black{};
+    info.clearValueCount = 1;
+    info.pClearValues = &black;
     vkCmdBeginRenderPass(commands, &info, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    // The tone map and the grid bounds draw into the image's area; ImGui sets its own viewport.
+    const VkViewport viewport{
+        float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
+    const VkRect2D scissor = area;
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &scissor);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.pipeline);
     DescriptorPush()
         .sampledImage(0, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.layout);
-    const TonemapPush push{
-        {1.0f / float(extent.width), 1.0f / float(extent.height)}, params.exposure, params.toneCurve ? 1u : 0u};
+    const glsl::TonemapPush push{glm::vec2(float(area.offset.x), float(area.offset.y)),
+                                 glm::vec2(1.0f / float(area.extent.width), 1.0f / float(area.extent.height)),
+                                 params.exposure, params.toneCurve ? 1u : 0u};
     vkCmdPushConstants(commands, tonemap_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDraw(commands, 3, 1, 0, 0);
+}
+
+void PresentPass::drawGridBounds(VkCommandBuffer commands, const glsl::GridBoundsPush& push) {
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, gridBounds_.pipeline);
+    vkCmdPushConstants(commands, gridBounds_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdDraw(commands, 24, 1, 0, 0);
 }
 
 void PresentPass::end(VkCommandBuffer commands) { vkCmdEndRenderPass(commands); }

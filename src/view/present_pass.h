@@ -1,7 +1,8 @@
 // The viewer's present pass: tone-maps the renderer's image onto a swapchain image inside a
 // VkRenderPass (Dear ImGui 1.86's Vulkan backend draws into a render pass, so it shares this one).
 //
-//   begin(): render pass begins, full-screen triangle with tonemap.frag → caller draws the UI → end()
+//   begin(): render pass begins, full-screen triangle with tonemap.frag → drawGridBounds() if asked
+//   → caller draws the UI → end()
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -10,6 +11,7 @@
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
+#include "present.h"
 #include "view/swapchain.h"
 
 namespace vct {
@@ -30,8 +32,12 @@ public:
     void createFramebuffers(const Swapchain& swapchain);
 
     // `radiance` is in GENERAL layout, written by earlier submissions (the renderer's frame).
-    void begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, const GpuImage& radiance,
-               const TonemapParams& params);
+    // The image fills `area` of the window (`extent`); the rest is cleared to black.
+    void begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, VkRect2D area,
+               const GpuImage& radiance, const TonemapParams& params);
+    // The voxel grid's 12 edges as 1-pixel lines over the tone-mapped image. Not depth-tested (the
+    // present pass has no depth): edges behind the scene show too, so the whole box reads at once.
+    void drawGridBounds(VkCommandBuffer commands, const glsl::GridBoundsPush& push);
     void end(VkCommandBuffer commands);
 
     VkRenderPass renderPass = VK_NULL_HANDLE;
@@ -41,6 +47,7 @@ private:
     void destroyFramebuffers();
     GpuContext& context_;
     Pipeline tonemap_;
+    Pipeline gridBounds_;
     Sampler sampler_;
     std::vector<VkFramebuffer> framebuffers_;
 };

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 #include <vector>
 
 #include "render/presets.h"
 #include "scene/load.h"
+#include "view/scene_panel.h"
 
 namespace vct {
 namespace {
@@ -72,6 +75,28 @@ static bool flowingButton(const char* label, bool first) {
     return ImGui::Button(label);
 }
 
+// The recent files, newest first: a click opens one; a file that is gone is greyed and does nothing.
+static void recentFilesList(ViewerState& state) {
+    if (state.recentFiles.empty()) return;
+    ImGui::TextDisabled("recent:");
+    for (size_t i = 0; i < state.recentFiles.size(); ++i) {
+        const std::string& path = state.recentFiles[i];
+        const std::filesystem::path file(path);
+        std::error_code error;
+        const bool present = std::filesystem::is_regular_file(file, error);
+        // The name first, then whether it is gone: a long folder is cut at the window's edge.
+        const std::string folder = "  " + file.parent_path().string();
+        ImGui::PushID(int(i));
+        if (present) {
+            if (ImGui::Selectable((file.filename().string() + folder).c_str())) state.requestedScene = path;
+        } else {
+            ImGui::TextDisabled("%s (missing)%s", file.filename().string().c_str(), folder.c_str());
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
+        ImGui::PopID();
+    }
+}
+
 static void sceneSection(ViewerState& state) {
     if (!ImGui::CollapsingHeader("Scene")) return;
     ImGui::Text("%s", state.sceneName.c_str());
@@ -81,21 +106,16 @@ static void sceneSection(ViewerState& state) {
         first = false;
     }
     const ImGuiStyle& style = ImGui::GetStyle();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Load").x -
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Open").x -
                             2.0f * style.FramePadding.x - style.ItemSpacing.x);
     ImGui::InputText("##glTF path", state.scenePathField, sizeof state.scenePathField);
+    // Enter in the field opens, as the button does.
+    const bool enter = ImGui::IsItemDeactivated() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
     ImGui::SameLine();
-    if (ImGui::Button("Load") && state.scenePathField[0] != '\0') state.requestedScene = state.scenePathField;
+    if ((ImGui::Button("Open") || enter) && state.scenePathField[0] != '\0')
+        state.requestedScene = state.scenePathField;
     wrappedNote("a .gltf/.glb path, or drop the file on the window");
-}
-
-static void lightSection(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Sun", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    ImGui::SliderFloat("azimuth", &state.sun.azimuthDegrees, 0.0f, 360.0f, "%.0f deg");
-    ImGui::SliderFloat("elevation", &state.sun.elevationDegrees, -89.0f, 89.0f, "%.0f deg");
-    ImGui::SliderFloat("intensity (lux)", &state.sun.intensity, 0.0f, 20.0f, "%.2f");
-    ImGui::Checkbox("animate (L)", &state.sun.animate);
-    ImGui::SliderFloat("animation speed", &state.sun.animateDegreesPerSecond, -90.0f, 90.0f, "%.0f deg/s");
+    recentFilesList(state);
 }
 
 static void shadingSection(ViewerState& state, const UiFacts& facts) {
@@ -125,6 +145,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
     int mip = int(settings.shading.debugVoxelMip);
     ImGui::SliderInt("voxel mip", &mip, 0, int(facts.voxelMips) - 1);
     settings.shading.debugVoxelMip = uint32_t(std::clamp(mip, 0, int(facts.voxelMips) - 1));
+    ImGui::Checkbox("voxel grid bounds (G)", &state.showGridBounds);
 }
 
 static void coneSection(RenderSettings& settings) {
@@ -194,12 +215,21 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
         ImVec2(std::min(kSettingsWidth, viewport->Size.x), std::max(viewport->Size.y - state.statusBarHeight, 60.0f)),
         ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(1.0f);
-    ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    const bool open =
+        ImGui::Begin("Settings (Tab hides, F1 guide)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    // The image goes right of the open settings (Viewer::imageArea); collapsed, only the title bar
+    // covers it.
+    state.settingsWidth = open ? ImGui::GetWindowWidth() : 0.0f;
+    if (!open) {
+        ImGui::End();
+        return;
+    }
     // Controls take what the labels (up to "local shadow map") leave.
     ImGui::PushItemWidth(-ImGui::CalcTextSize("local shadow map  ").x);
     presetRow(state);
     sceneSection(state);
-    lightSection(state);
+    drawLightsSection(state);
+    drawMaterialsSection(state);
     shadingSection(state, facts);
     coneSection(state.settings);
     resolutionSection(state);
@@ -362,17 +392,19 @@ void drawGuideWindow(ViewerState& state) {
         {"R", "reset to the scene camera"},
         {"arrow keys", "move the sun (left/right azimuth, up/down elevation)"},
         {"Ctrl + left drag", "move the sun"},
-        {"1 .. 7",
+        {"1 .. 8",
          "toggle direct diffuse, direct specular, indirect diffuse, indirect specular, ambient occlusion, emission, "
-         "shadows"},
+         "shadows, area lights"},
         {"M", "mode: full, direct, indirect"},
         {"V", "next view: lit, base colour, normal, depth, AO, voxels"},
         {"[ / ]", "voxel mip shown by the voxel views"},
         {"L", "animate the sun"},
+        {"G", "draw the voxel grid's box: amber lines over the image, edges behind the scene included"},
         {"F12 or P", "screenshot (PNG in the current folder)"},
         {"Tab", "hide or show the panels"},
         {"F1 or H", "this guide"},
-        {"drop a file", "load a .gltf/.glb scene"},
+        {"drop a file",
+         "load a .gltf/.glb scene; or type its path under Settings > Scene, which lists the recent ones"},
         {"Esc", "quit"},
     };
     if (ImGui::BeginTable("controls", 2)) {

@@ -11,7 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 
 #include "error.h"
 #include "gpu/commands.h"
@@ -24,6 +26,7 @@
 #include "scene/load.h"
 #include "view/controls.h"
 #include "view/present_pass.h"
+#include "view/recent_files.h"
 #include "view/swapchain.h"
 #include "view/ui.h"
 #include "view/viewer_state.h"
@@ -34,6 +37,15 @@ namespace {
 
 bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
+}
+
+bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].color != b[i].color || a[i].intensity != b[i].intensity || a[i].position != b[i].position ||
+            a[i].direction != b[i].direction)
+            return false;
+    return true;
 }
 
 // Scenes with lights but no sun get one to steer, as `--light-dir` does: shining from behind the
@@ -79,13 +91,18 @@ private:
     void handleKeys(float seconds);
     void handleMouse(float seconds);
     void applyRequests();
+    void applyLightEdits();
+    void showScene();
+    void rememberSceneFile(const std::string& name);
     bool loadScene(const std::string& name);
     void buildRenderer();
     void recreateSwapchain();
     void resizeRenderer();
+    VkRect2D imageArea() const;
     VkExtent2D drawableExtent(VkExtent2D window) const;
     void drawFrame(bool drawUi, const std::string& screenshotPath);
-    void writeScreenshot(const Buffer& pixels, const std::string& path);
+    void writeScreenshot(const Buffer& pixels, VkExtent2D extent, const std::string& path);
+    glsl::GridBoundsPush gridBoundsPush() const;
     UiFacts facts() const;
     void printFrameStats(const FrameStats& stats) const;
 
@@ -104,7 +121,6 @@ private:
     InputState input_;
     ViewerState state_;
     Scene scene_;
-    size_t sunIndex_ = 0;
     SunControl shownSun_;  // the sun the renderer has
     Camera camera_;
     Camera lastRenderedCamera_;
@@ -113,9 +129,11 @@ private:
     VkExtent2D shownFramebuffer_{};  // the window's framebuffer size when the swapchain was made
     static constexpr uint64_t kSwapchainImagesAtMost = 4;
     bool swapchainStale_ = false;
+    bool recentFilesWarned_ = false;  // the list could not be written: said once
     bool shownVsync_ = true;
     float shownRenderScale_ = 1.0f;
-    bool imageStale_ = true;  // the renderer must run this frame
+    VkRect2D shownImageArea_{};  // the part of the window the image was sized for
+    bool imageStale_ = true;     // the renderer must run this frame
     bool quit_ = false;
     uint64_t iteration_ = 0;
     uint32_t framesDrawn_ = 0;
@@ -165,13 +183,11 @@ Viewer::Viewer(ViewerOptions options)
     state_.sceneName = options_.sceneName;
     state_.warnings = scene_.warnings;  // printed on stderr by `vct view` already
     if (scene_.cameras.empty()) scene_.cameras.push_back(defaultCamera(scene_.bounds()));
-    sunIndex_ = ensureSun(scene_);
-    state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
-    state_.sun.intensity = scene_.lights[sunIndex_].intensity;
-    shownSun_ = state_.sun;
-    camera_ = scene_.cameras.front();
-    cameraControl_.reset(camera_, scene_.bounds());
+    state_.sunIndex = ensureSun(scene_);
     buildRenderer();
+    showScene();
+    state_.recentFiles = readRecentFiles(recentFilesPath());
+    rememberSceneFile(state_.sceneName);
     std::printf("vct view: %s, %zu triangles, on %s (%s)\n", state_.sceneName.c_str(), scene_.triangleCount(),
                 context_->deviceName().c_str(), presentModeName(swapchain_->presentMode));
     if (softwarePreset) std::printf("vct view: %s\n", state_.notice.c_str());
@@ -220,11 +236,24 @@ void Viewer::recreateSwapchain() {
     resizeRenderer();
 }
 
-// The renderer draws at the window's size × the render scale; the present pass scales it up.
+// The image takes the window right of the docked settings, as an editor's viewport does, so the
+// panel covers none of it; the aspect ratio follows. Collapsed or hidden settings leave the whole
+// window to it, and so does a window where the image would get less than a third of the width
+// (there the settings cover the image, and collapse with their title bar's arrow).
+VkRect2D Viewer::imageArea() const {
+    const VkExtent2D window = swapchain_->extent;
+    const uint32_t panel = uint32_t(std::lround(std::max(state_.settingsWidth, 0.0f)));
+    if (panel == 0 || panel >= window.width || 3 * (window.width - panel) < window.width) return {{0, 0}, window};
+    return {{int32_t(panel), 0}, {window.width - panel, window.height}};
+}
+
+// The renderer draws at the image area's size × the render scale; the present pass scales it up.
 void Viewer::resizeRenderer() {
     shownRenderScale_ = state_.renderScale;
-    state_.settings.image.width = std::max(1u, uint32_t(std::lround(swapchain_->extent.width * state_.renderScale)));
-    state_.settings.image.height = std::max(1u, uint32_t(std::lround(swapchain_->extent.height * state_.renderScale)));
+    shownImageArea_ = imageArea();
+    const VkExtent2D area = shownImageArea_.extent;
+    state_.settings.image.width = std::max(1u, uint32_t(std::lround(area.width * state_.renderScale)));
+    state_.settings.image.height = std::max(1u, uint32_t(std::lround(area.height * state_.renderScale)));
     if (renderer_) {
         renderer_->resize(state_.settings.image);  // the voxels are kept
         imageStale_ = true;
@@ -256,28 +285,51 @@ bool Viewer::loadScene(const std::string& name) {
     addDefaultSunIfUnlit(loaded);  // as `vct render` would light it
     Scene previous = std::move(scene_);
     scene_ = std::move(loaded);
-    const size_t previousSun = sunIndex_;
-    sunIndex_ = ensureSun(scene_);
+    const size_t previousSun = state_.sunIndex;
+    state_.sunIndex = ensureSun(scene_);
     try {
         buildRenderer();
     } catch (const Error& error) {
         state_.error = std::string(error.what()) + " (keeping " + state_.sceneName + ")";
         scene_ = std::move(previous);
-        sunIndex_ = previousSun;
-        buildRenderer();
+        state_.sunIndex = previousSun;
+        buildRenderer();  // the panel's edits of the previous scene's lights return next frame
         return false;
     }
     state_.error.clear();
     state_.sceneName = name;
     for (const std::string& warning : scene_.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     state_.warnings = scene_.warnings;
-    state_.sun.setFromTravelDirection(scene_.lights[sunIndex_].direction);
-    state_.sun.intensity = scene_.lights[sunIndex_].intensity;
+    showScene();
+    rememberSceneFile(name);
+    return true;
+}
+
+// A scene opened from a file (not a built-in name) goes first in the recent files, which are saved
+// at once: the viewer may end by a crash of the driver or the window system.
+void Viewer::rememberSceneFile(const std::string& name) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(name, error)) return;
+    rememberRecentFile(state_.recentFiles, name);
+    const std::string problem = writeRecentFiles(recentFilesPath(), state_.recentFiles);
+    if (problem.empty() || recentFilesWarned_) return;
+    recentFilesWarned_ = true;
+    std::fprintf(stderr, "warning: %s\n", problem.c_str());
+    state_.warnings.push_back(problem);
+}
+
+// The panels and the camera start from the scene the renderer was just built for.
+void Viewer::showScene() {
+    state_.lights = scene_.lights;
+    state_.materials = scene_.materials;
+    state_.sceneSize = std::max(glm::length(scene_.bounds().extent()), 1e-3f);
+    const Light& sun = scene_.lights.at(state_.sunIndex);
+    state_.sun.setFromTravelDirection(sun.direction);
+    state_.sun.intensity = sun.intensity;
     shownSun_ = state_.sun;
     camera_ = scene_.cameras.front();
     cameraControl_.reset(camera_, scene_.bounds());
     renderer_->setCamera(camera_);
-    return true;
 }
 
 void Viewer::applyScript() {
@@ -314,6 +366,16 @@ void Viewer::applyScript() {
             pendingScreenshots_.emplace_back(a[0], a.size() > 1);
         } else if (event.action == "drop") {
             input_.droppedFiles.push_back(a[0]);
+        } else if (event.action == "type") {
+            for (const char character : a[0]) ImGui::GetIO().AddInputCharacter(static_cast<unsigned char>(character));
+        } else if (event.action == "light") {
+            // What the scene panel's intensity field writes (the sun's is the sun control's).
+            const float index = parseNumber(event, 0), intensity = parseNumber(event, 2);
+            if (index < 0.0f || index >= float(state_.lights.size()) || index != std::floor(index))
+                throw Error("script, frame " + std::to_string(event.frame) + ": the scene has no light " + a[0] +
+                            " (it has " + std::to_string(state_.lights.size()) + ", counted from 0)");
+            if (size_t(index) == state_.sunIndex) state_.sun.intensity = intensity;
+            else state_.lights[size_t(index)].intensity = intensity;
         } else if (event.action == "quit") {
             quit_ = true;
         }
@@ -347,6 +409,7 @@ void Viewer::handleKeys(float seconds) {
                     ++settings.shading.debugVoxelMip;
                 break;
             case GLFW_KEY_L: state_.sun.animate = !state_.sun.animate; break;
+            case GLFW_KEY_G: state_.showGridBounds = !state_.showGridBounds; break;
             case GLFW_KEY_F12:
             case GLFW_KEY_P: state_.requestScreenshot = true; break;
             case GLFW_KEY_ESCAPE: quit_ = true; break;
@@ -416,17 +479,7 @@ void Viewer::applyRequests() {
         pendingScreenshots_.emplace_back(timestampedScreenshotName(), state_.screenshotWithUi);
     }
 
-    state_.sun.normalize();
-    const SunControl& sun = state_.sun;
-    if (sun.azimuthDegrees != shownSun_.azimuthDegrees || sun.elevationDegrees != shownSun_.elevationDegrees ||
-        sun.intensity != shownSun_.intensity) {
-        std::vector<Light> lights = renderer_->lights();
-        lights.at(sunIndex_).direction = sun.travelDirection();
-        lights.at(sunIndex_).intensity = sun.intensity;
-        renderer_->setLights(lights);  // re-injects light; the voxels stay
-        shownSun_ = sun;
-        imageStale_ = true;
-    }
+    applyLightEdits();
     if (renderer_->settings().resources != state_.settings.resources) {
         const RenderSettings previous = renderer_->settings();
         try {
@@ -451,6 +504,33 @@ void Viewer::applyRequests() {
     if (state_.renderScale != shownRenderScale_) resizeRenderer();
 }
 
+// The sun steered by keys, mouse or panel, and the other lights edited in the panel, reach the
+// renderer by one path: setLights re-injects light and redraws the shadow maps of the lights that
+// moved; the voxels stay, and the bounces re-converge over the next frames.
+void Viewer::applyLightEdits() {
+    state_.sun.normalize();
+    const SunControl& sun = state_.sun;
+    Light& sunLight = state_.lights.at(state_.sunIndex);
+    if (sun.azimuthDegrees != shownSun_.azimuthDegrees || sun.elevationDegrees != shownSun_.elevationDegrees ||
+        sun.intensity != shownSun_.intensity) {
+        sunLight.direction = sun.travelDirection();
+        sunLight.intensity = sun.intensity;
+        shownSun_ = sun;
+    }
+    if (sameLights(state_.lights, renderer_->lights())) return;
+    try {
+        renderer_->setLights(state_.lights);
+        imageStale_ = true;
+    } catch (const Error& error) {
+        // E.g. brighter than the voxels' float16 can hold: the renderer keeps its lights.
+        state_.error = error.what();
+        std::fprintf(stderr, "vct view: %s (the light is kept as it was)\n", error.what());
+        state_.lights = renderer_->lights();
+        state_.sun.intensity = state_.lights.at(state_.sunIndex).intensity;
+        shownSun_ = state_.sun;
+    }
+}
+
 UiFacts Viewer::facts() const {
     UiFacts facts;
     facts.deviceName = context_->deviceName();
@@ -467,8 +547,7 @@ UiFacts Viewer::facts() const {
     return facts;
 }
 
-void Viewer::writeScreenshot(const Buffer& pixels, const std::string& path) {
-    const VkExtent2D extent = swapchain_->extent;
+void Viewer::writeScreenshot(const Buffer& pixels, VkExtent2D extent, const std::string& path) {
     const bool bgra = swapchain_->format == VK_FORMAT_B8G8R8A8_UNORM;
     const uint8_t* source = static_cast<const uint8_t*>(pixels.mapped);
     std::vector<uint8_t> rgb(size_t(extent.width) * extent.height * 3);
@@ -481,6 +560,25 @@ void Viewer::writeScreenshot(const Buffer& pixels, const std::string& path) {
         throw Error("cannot write the screenshot '" + path + "'");
     state_.notice = "saved " + path;
     std::printf("saved %s (%ux%u)\n", path.c_str(), extent.width, extent.height);
+}
+
+// The voxel grid's box seen by the camera the image was rendered with, in the renderer's frame.
+glsl::GridBoundsPush Viewer::gridBoundsPush() const {
+    const glsl::VoxelGridParams& grid = renderer_->voxelGrid();
+    Bounds box;
+    box.min = glm::vec3(grid.originVoxelSize);
+    box.max = box.min + float(grid.resolution.x) * grid.originVoxelSize.w;
+    Camera camera = renderer_->camera();
+    camera.position -= renderer_->sceneOrigin();
+    const ImageSettings& image = renderer_->settings().image;
+    glsl::GridBoundsPush push{};
+    // The far plane fitted to the box rather than the scene: the grid's corners reach past the
+    // scene's, and a line past the far plane would be cut.
+    push.viewProjection = cameraMatrices(camera, float(image.width) / float(image.height), box).viewProjection;
+    push.boxMin = glm::vec4(box.min, 1.0f);
+    push.boxMax = glm::vec4(box.max, 1.0f);
+    push.color = glm::vec4(1.0f, 0.8f, 0.1f, 1.0f);  // amber: apart from every colour the Cornell box has
+    return push;
 }
 
 void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
@@ -496,10 +594,12 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
 
     const bool capture = !screenshotPath.empty() && swapchain_->canCopyFrom;
     const VkExtent2D extent = swapchain_->extent;
+    // With the UI, the whole window; without, the image alone (right of the open settings).
+    const VkRect2D captured = drawUi ? VkRect2D{{0, 0}, extent} : shownImageArea_;
     Buffer pixels;
     if (capture)
-        pixels =
-            Buffer(*context_, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        pixels = Buffer(*context_, VkDeviceSize(captured.extent.width) * captured.extent.height * 4,
+                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
 
     VK_CHECK(vkResetFences(context_->device, 1, &frame.fence));
     VK_CHECK(vkResetCommandBuffer(frame.commands, 0));
@@ -512,7 +612,8 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     tonemap.exposure = state_.exposure;
     const DebugView view = renderer_->settings().shading.debugView;
     tonemap.toneCurve = view == DebugView::None || view == DebugView::VoxelRadiance;
-    presentPass_->begin(frame.commands, imageIndex, extent, renderer_->output(), tonemap);
+    presentPass_->begin(frame.commands, imageIndex, extent, shownImageArea_, renderer_->output(), tonemap);
+    if (state_.showGridBounds) presentPass_->drawGridBounds(frame.commands, gridBoundsPush());
     if (drawUi) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.commands);
     presentPass_->end(frame.commands);
     presentTimer_->end(frame.commands);
@@ -524,7 +625,8 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
                      VK_ACCESS_2_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {extent.width, extent.height, 1};
+        region.imageOffset = {captured.offset.x, captured.offset.y, 0};
+        region.imageExtent = {captured.extent.width, captured.extent.height, 1};
         vkCmdCopyImageToBuffer(frame.commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, pixels.buffer, 1, &region);
         imageBarrier(frame.commands, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
@@ -559,7 +661,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     const std::vector<PassTime> times = presentTimer_->results();
     if (!times.empty()) state_.history.presentMilliseconds = float(times.front().milliseconds);
     ++framesDrawn_;
-    if (capture) writeScreenshot(pixels, screenshotPath);
+    if (capture) writeScreenshot(pixels, captured.extent, screenshotPath);
     else if (!screenshotPath.empty()) state_.notice = "this window system cannot copy from its images";
 }
 
@@ -614,6 +716,7 @@ bool Viewer::loopIteration() {
     if (swapchainStale_) recreateSwapchain();
 
     const UiFacts uiFacts = facts();
+    state_.settingsWidth = 0.0f;  // drawSettingsWindow sets it while the settings are open
     if (state_.showPanels) {
         drawStatusBar(state_);
         drawSettingsWindow(state_, uiFacts);
@@ -623,6 +726,10 @@ bool Viewer::loopIteration() {
     drawWarningsWindow(state_);
     drawErrorWindow(state_);
     ImGui::Render();
+    const VkRect2D area = imageArea();
+    if (area.offset.x != shownImageArea_.offset.x || area.extent.width != shownImageArea_.extent.width ||
+        area.extent.height != shownImageArea_.extent.height)
+        resizeRenderer();  // the settings opened, closed or were hidden: the voxels stay
 
     if (imageStale_ || renderer_->settling() || options_.renderEveryFrame ||
         !sameCamera(renderer_->camera(), lastRenderedCamera_)) {

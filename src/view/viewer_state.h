@@ -36,19 +36,28 @@ struct ViewerState {
     float exposure = 1.0f;
     float renderScale = 1.0f;  // renderer image size / window size
     SunControl sun;
-    bool showGuide = false;  // F1 opens it; the status bar says so
-    bool showHint = true;    // that one-line hint (--no-guide: neither)
+    // The scene's lights as the scene panel edits them; the main loop hands them to the renderer
+    // when they differ from its own. The sun's direction and intensity come from `sun`.
+    std::vector<Light> lights;
+    size_t sunIndex = 0;
+    std::vector<Material> materials;  // shown, not edited
+    float sceneSize = 1.0f;           // the bounds' diagonal, for drag speeds
+    bool showGuide = false;           // F1 opens it; the status bar says so
+    bool showHint = true;             // that one-line hint (--no-guide: neither)
     bool guideOpened = false;
     float statusBarHeight = 0.0f;  // last frame's, so the settings window ends above it
+    float settingsWidth = 0.0f;    // this frame's docked settings, 0 when collapsed or hidden
     bool showProfiler = true;
     bool wasNarrow = false;  // the window was too narrow for the settings and the profiler side by side
     bool showPanels = true;
+    bool showGridBounds = false;  // the voxel grid's box as lines over the image (G)
     bool vsync = true;
     bool screenshotWithUi = false;
 
-    std::string sceneName;          // what is loaded now
-    char scenePathField[512] = {};  // the panel's text field
-    std::string requestedScene;     // set by the panel or a drop; loaded by the main loop
+    std::string sceneName;                 // what is loaded now
+    char scenePathField[512] = {};         // the panel's text field
+    std::string requestedScene;            // set by the panel or a drop; loaded by the main loop
+    std::vector<std::string> recentFiles;  // scenes opened from files, newest first (recent_files.h)
     bool requestScreenshot = false;
     bool requestCameraReset = false;
     bool requestOrbitToggle = false;

@@ -10,6 +10,7 @@
 
 #include "error.h"
 #include "gpu/spirv_reflect.h"
+#include "present.h"
 #include "voxelize.h"
 
 namespace vct {
@@ -269,8 +270,9 @@ TEST(SpirvReflect, PushConstantBytesEndAtTheLastMember) {
     // voxelize.comp's push constants are the VoxelizeParams that C++ fills from the same header.
     EXPECT_EQ(reflectFile("voxelize.comp").pushConstantBytes, sizeof(glsl::VoxelizeParams));
     EXPECT_EQ(reflectFile("voxel_resolve.comp").pushConstantBytes, sizeof(glsl::VoxelizeParams));
-    // tonemap.frag: vec2 inverseTargetSize, float exposure, uint applyToneCurve.
-    EXPECT_EQ(reflectFile("tonemap.frag").pushConstantBytes, 16u);
+    // The viewer's present pass: structs C++ fills from the same header (present.h).
+    EXPECT_EQ(reflectFile("tonemap.frag").pushConstantBytes, sizeof(glsl::TonemapPush));
+    EXPECT_EQ(reflectFile("grid_bounds.vert").pushConstantBytes, sizeof(glsl::GridBoundsPush));
     EXPECT_EQ(reflectFile("mips.comp").pushConstantBytes, 0u);
 }
 

@@ -6,6 +6,7 @@
 #include <stb/stb_image_write.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +64,30 @@ double changedFraction(const Png& a, const Png& b) {
     return double(changed) / double(a.rgb.size() / 3);
 }
 
+void writeWhitePixel(const fs::path& file) {
+    const unsigned char white[3] = {255, 255, 255};
+    ASSERT_TRUE(stbi_write_png(file.c_str(), 1, 1, 3, white, 3));
+}
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// A glTF file of one triangle whose base colour is the texture "texture.png" beside it.
+void writeTexturedTriangle(const fs::path& file) {
+    std::ofstream(file)
+        << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
+        << R"(AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],)"
+        << R"("max":[1,1,1]}],"images":[{"uri":"texture.png"}],"textures":[{"source":0}],)"
+        << R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
+        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
+        << R"("scenes":[{"nodes":[0]}],"scene":0})";
+}
+
 class View : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -72,16 +97,16 @@ protected:
         fs::create_directories(directory);
     }
 
-    // Runs `vct view` in `directory` on a small window with 64³ voxels and one bounce (so that a
+    // Runs `vct view` in `directory` (which is its XDG_CONFIG_HOME too: the recent files go there) on a small window with 64³ voxels and one bounce (so that a
     // frame changes only what the script changed: converging bounces brighten the first frames,
     // which View.ProgressiveBouncesSettleAndThenTheImageStays checks); returns the exit code.
     // `hint`: start with the status bar's one-line hint to the guide, as a user does (the tests
     // otherwise pass --no-guide, so that screenshots with the panels show only what they test).
     int runViewer(const std::string& arguments, bool hint = false) {
         const fs::path logPath = directory / "log.txt";
-        const std::string command = "cd '" + directory.string() +
-                                    "' && XDG_RUNTIME_DIR=/tmp " XVFB_RUN
-                                    " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
+        const std::string command = "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp XDG_CONFIG_HOME='" +
+                                    directory.string() +
+                                    "' " XVFB_RUN " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
                                     std::string(hint ? "" : "--no-guide ") +
                                     "--voxels 64 --shadow-map 512 --bounces 1 --width 320 --height 180 " + arguments +
                                     " > '" + logPath.string() + "' 2>&1";
@@ -115,7 +140,13 @@ TEST_F(View, StartsRendersAndSavesAScreenshotOfTheWindowSize) {
 TEST_F(View, ScreenshotWithTheUiShowsThePanels) {
     ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot plain.png --frames 2"), 0) << log;
     ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot ui.png --frames 2 --screenshot-ui"), 0) << log;
-    EXPECT_GT(changedFraction(screenshot("plain.png"), screenshot("ui.png")), 0.2);
+    // Without the UI, the image alone: what is right of the settings (370 px). With it, the window,
+    // whose left holds the settings and whose right the same image.
+    const Png plain = screenshot("plain.png"), ui = screenshot("ui.png");
+    EXPECT_EQ(plain.width, 640 - 370) << log;
+    EXPECT_EQ(ui.width, 640);
+    EXPECT_LT(changedFraction(crop(plain, 0, 0, 270, 300), crop(ui, 370, 0, 640, 300)), 0.001);
+    EXPECT_GT(changedFraction(crop(plain, 0, 0, 270, 300), crop(ui, 0, 0, 270, 300)), 0.2);
 }
 
 TEST_F(View, FlyingAndLookingMoveTheCamera) {
@@ -279,12 +310,12 @@ TEST_F(View, StartsWithAHintNotTheGuideAndF1OpensTheGuide) {
     const std::string events =
         "2 screenshot plain.png; 3 screenshot panels.png ui; 4 key F1 press; 5 screenshot guide.png ui; 6 quit";
     ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'", true), 0) << log;
-    const Png plain = crop(screenshot("plain.png"), 400, 60, 620, 280);
+    const Png plain = crop(screenshot("plain.png"), 30, 60, 250, 280);  // the image alone, from x = 370
     ASSERT_FALSE(plain.rgb.empty()) << log;
     EXPECT_LT(changedFraction(plain, crop(screenshot("panels.png"), 400, 60, 620, 280)), 0.001) << log;
     EXPECT_GT(changedFraction(plain, crop(screenshot("guide.png"), 400, 60, 620, 280)), 0.3) << log;
     // The hint is a line at the bottom, over the image.
-    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 400, 340, 640, 360),
+    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 30, 340, 270, 360),
                               crop(screenshot("panels.png"), 400, 340, 640, 360)),
               0.05)
         << log;
@@ -306,14 +337,7 @@ TEST_F(View, SceneWarningsAreShownInTheWindow) {
     // A triangle whose base-colour texture is missing loads with a warning: on stderr, and in a
     // window. With the texture there (1×1 white: the same colour as the fallback, so the same
     // image) there is no warning, and the panels' screenshots differ only by that window.
-    std::ofstream(directory / "textured.gltf")
-        << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
-        << R"(AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
-        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],)"
-        << R"("max":[1,1,1]}],"images":[{"uri":"texture.png"}],"textures":[{"source":0}],)"
-        << R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
-        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
-        << R"("scenes":[{"nodes":[0]}],"scene":0})";
+    writeTexturedTriangle(directory / "textured.gltf");
     // --light-dir: the file has no light, and the default sun's warning would be one more.
     const std::string arguments =
         "--scene textured.gltf --light-dir 0,-1,-1 --width 640 --height 360 --events '2 screenshot ";
@@ -328,6 +352,192 @@ TEST_F(View, SceneWarningsAreShownInTheWindow) {
     EXPECT_LT(changedFraction(screenshot("missing_plain.png"), screenshot("found_plain.png")), 0.001);
     EXPECT_GT(changedFraction(screenshot("missing_panels.png"), screenshot("found_panels.png")), 0.05)
         << "the warning is not shown in the window";
+}
+
+TEST_F(View, DimmingALightInTheScenePanelRerunsOnlyTheLightPasses) {
+    // 640×360, the Cornell box: light 0 is its point light, light 1 the viewer's sun. A click opens
+    // light 0's node in the Lights section; a drag to the left across its intensity field takes the
+    // intensity to 0 (the field clamps there). The box gets darker, and as when the arrow keys move
+    // the sun, the light is re-injected while the voxels stay.
+    const std::string events =
+        "2 screenshot before.png; 3 mouse 100 105; 4 button left down; 5 button left up; 6 mouse 210 123;"
+        "7 button left down; 8 mouse 5 123; 9 button left up; 10 screenshot panel.png ui; 11 screenshot after.png;"
+        "12 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    const Png before = screenshot("before.png"), after = screenshot("after.png");  // the image alone
+    ASSERT_FALSE(after.rgb.empty()) << log;
+    EXPECT_LT(meanValue(after), meanValue(before) - 10.0) << "the point light still shines\n" << log;
+    EXPECT_NE(log.find("ran shadow inject mips gbuffer diffuse-cones shade resolve; skipped voxelize bounce\n"),
+              std::string::npos)
+        << log;
+}
+
+TEST_F(View, ALightEntryInAScriptSetsItsIntensity) {
+    // The `light` entry writes what the panel's intensity field writes: 0 darkens the box, 4 (cd)
+    // brightens it past the start (1 cd); the sun's goes through the sun control, as its field does.
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot start.png; 2 light 0 intensity 0; 3 screenshot off.png;"
+                               "4 light 0 intensity 4; 5 screenshot bright.png; 6 light 1 intensity 0;"
+                               "7 screenshot no_sun.png; 8 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    const double start = meanValue(screenshot("start.png")), bright = meanValue(screenshot("bright.png"));
+    EXPECT_LT(meanValue(screenshot("off.png")), start - 10.0) << log;
+    EXPECT_GT(bright, start + 10.0) << log;
+    EXPECT_LT(meanValue(screenshot("no_sun.png")), bright - 2.0) << log;
+}
+
+TEST_F(View, ALightTheRendererRefusesIsKeptAsItWasAndSaidSo) {
+    // A negative intensity, or one past what the voxels' float16 holds: the window shows why, the
+    // light stays as it was (the same image), and the viewer goes on.
+    const std::string events = std::string(hidePanels) +
+                               "1 screenshot before.png; 2 light 0 intensity -1; 3 screenshot negative.png;"
+                               "4 light 0 intensity 1e30; 5 screenshot huge.png; 6 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    EXPECT_NE(log.find("has a negative intensity or colour (the light is kept as it was)"), std::string::npos) << log;
+    EXPECT_NE(log.find("brighter than this renderer represents"), std::string::npos) << log;
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("negative.png")), 0.001);
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("huge.png")), 0.001);
+}
+
+TEST_F(View, RecentFilesThatCannotBeSavedAreAWarningInTheWindow) {
+    // A file where the config folder "vct" should be: the list cannot be written. The scene opens
+    // all the same, and the warning is on stderr and in the window.
+    writeTexturedTriangle(directory / "textured.gltf");
+    writeWhitePixel(directory / "texture.png");
+    std::ofstream(directory / "vct") << "not a folder";
+    ASSERT_EQ(runViewer("--scene textured.gltf --light-dir 0,-1,-1 --width 640 --height 360 --events '"
+                        "2 screenshot plain.png; 3 screenshot panels.png ui; 4 quit'"),
+              0)
+        << log;
+    EXPECT_NE(log.find("warning: cannot keep the recent files in '" + (directory / "vct" / "recent").string() + "'"),
+              std::string::npos)
+        << log;
+    // The warnings window is centred on the window, over the image right of the settings.
+    EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 10, 100, 270, 300),
+                              crop(screenshot("panels.png"), 380, 100, 640, 300)),
+              0.05)
+        << "the warning is not shown in the window";
+}
+
+TEST_F(View, ALightEntryForALightTheSceneLacksIsAnError) {
+    EXPECT_EQ(runViewer("--events '1 light 7 intensity 2; 2 quit'"), 1) << log;
+    EXPECT_NE(log.find("the scene has no light 7 (it has 2, counted from 0)"), std::string::npos) << log;
+    EXPECT_EQ(runViewer("--events '1 light 0 colour 2'"), 1) << log;
+    EXPECT_NE(log.find("a light's intensity is what a script sets"), std::string::npos) << log;
+}
+
+// The smallest rectangle holding every pixel `keep(x, y)` picks; empty (x0 > x1) when none.
+struct Rect {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+    void add(int x, int y) { x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y); }
+};
+
+TEST_F(View, TheGridBoundsKeyDrawsTheVoxelGridsBoxAroundTheScene) {
+    // O and the wheel back: orbiting far enough out that the whole grid is in view. G draws the
+    // grid's box as amber lines over the image, G again hides it. The voxel grid holds the scene,
+    // and fits it (the Cornell box is a cube, the grid a cube a little larger): the lines' bounding
+    // rectangle holds every lit pixel of the plain image and is not much larger than theirs.
+    const std::string events = std::string(hidePanels) +
+                               "1 key O press; 2 scroll -8; 4 screenshot plain.png; 5 key G press;"
+                               "6 screenshot box.png; 7 key G press; 8 screenshot off.png; 9 quit";
+    ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
+    const Png plain = screenshot("plain.png"), box = screenshot("box.png");
+    ASSERT_FALSE(box.rgb.empty()) << log;
+    ASSERT_EQ(plain.width, box.width);
+    Rect lines, scene;
+    size_t changed = 0, amber = 0;
+    for (int y = 0; y < plain.height; ++y)
+        for (int x = 0; x < plain.width; ++x) {
+            const unsigned char* before = &plain.rgb[(size_t(y) * plain.width + x) * 3];
+            const unsigned char* after = &box.rgb[(size_t(y) * plain.width + x) * 3];
+            if (before[0] + before[1] + before[2] > 30) scene.add(x, y);
+            if (std::abs(before[0] - after[0]) + std::abs(before[1] - after[1]) + std::abs(before[2] - after[2]) <= 12)
+                continue;
+            ++changed;
+            lines.add(x, y);
+            amber += after[0] > 220 && after[1] > 160 && after[1] < 240 && after[2] < 80;
+        }
+    const double pixels = double(plain.width) * plain.height;
+    EXPECT_GT(changed / pixels, 0.002) << "no lines drawn\n" << log;
+    EXPECT_LT(changed / pixels, 0.05) << "more than lines drawn";
+    EXPECT_GT(double(amber), 0.95 * double(changed)) << "what changed is not the lines' colour";
+    ASSERT_LE(scene.x0, scene.x1) << "the scene is not in view";
+    EXPECT_LE(lines.x0, scene.x0);
+    EXPECT_GE(lines.x1, scene.x1);
+    EXPECT_LE(lines.y0, scene.y0);
+    EXPECT_GE(lines.y1, scene.y1);
+    EXPECT_LT(lines.x1 - lines.x0, 1.2 * (scene.x1 - scene.x0)) << "the box is far larger than the scene";
+    EXPECT_LT(lines.y1 - lines.y0, 1.2 * (scene.y1 - scene.y0)) << "the box is far larger than the scene";
+    EXPECT_LT(changedFraction(plain, screenshot("off.png")), 0.001) << "G again hides the box";
+}
+
+// Pixels of `png` whose red channel clearly dominates: the Cornell box's left wall.
+size_t redPixels(const Png& png) {
+    size_t count = 0;
+    for (size_t i = 0; i + 2 < png.rgb.size(); i += 3)
+        count += png.rgb[i] > 100 && png.rgb[i + 1] < png.rgb[i] / 3 && png.rgb[i + 2] < png.rgb[i] / 3;
+    return count;
+}
+
+TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
+    // 960×540 (the issue's window), settings docked on the left (370 px): the image is drawn beside
+    // them, so the red wall, which they covered, shows; a screenshot without the UI is that image
+    // alone (the profiler covers the top right of the window's, above y = 350). A click on
+    // the title bar's arrow collapses the settings and the image takes the whole window again, as
+    // Tab does; re-sizing the image keeps the voxels.
+    const std::string events =
+        "2 screenshot open.png; 3 screenshot open_ui.png ui; 4 mouse 10 10; 5 button left down; 6 button left up;"
+        "8 screenshot collapsed.png; 9 key tab press; 10 screenshot hidden.png; 11 quit";
+    ASSERT_EQ(runViewer("--width 960 --height 540 --events '" + events + "'"), 0) << log;
+    const Png open = screenshot("open.png"), openUi = screenshot("open_ui.png");
+    const Png collapsed = screenshot("collapsed.png");
+    ASSERT_FALSE(collapsed.rgb.empty()) << log;
+    EXPECT_EQ(open.width, 960 - 370) << log;
+    EXPECT_LT(changedFraction(crop(open, 0, 360, 590, 480), crop(openUi, 370, 360, 960, 480)), 0.001)
+        << "the image is not right of the settings";
+    EXPECT_GT(redPixels(crop(openUi, 380, 0, 960, 480)), 2000u) << "the red wall is not beside the settings";
+    EXPECT_GT(meanValue(crop(collapsed, 0, 30, 360, 540)), 20.0) << "collapsed settings leave the window to the image";
+    EXPECT_LT(changedFraction(collapsed, screenshot("hidden.png")), 0.001) << "collapsed or hidden, the same image";
+    EXPECT_NE(log.find("ran gbuffer diffuse-cones shade resolve; skipped shadow voxelize inject mips bounce"),
+              std::string::npos)
+        << log;
+}
+
+// 640×360: a click on the "Scene" header opens the section; its path field and Open button, and
+// below them the recent files, are at these heights.
+constexpr const char* openSceneSection = "2 mouse 50 59; 3 button left down; 4 button left up; ";
+
+TEST_F(View, AFileTypedIntoTheSceneFieldOpensAndGoesToTheRecentFiles) {
+    writeTexturedTriangle(directory / "textured.gltf");
+    writeWhitePixel(directory / "texture.png");
+    const std::string events = std::string(openSceneSection) +
+                               "1 screenshot before.png; 5 mouse 150 168; 6 button left down; 7 button left up;"
+                               "8 type textured.gltf; 9 mouse 330 168; 10 button left down; 11 button left up;"
+                               "13 screenshot after.png; 14 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    EXPECT_NE(log.find("loading textured.gltf\n"), std::string::npos) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << "still the Cornell box";
+    // Kept as an absolute path, so it opens from any folder, in $XDG_CONFIG_HOME/vct/recent.
+    EXPECT_EQ(readText(directory / "vct" / "recent"), (directory / "textured.gltf").string() + "\n") << log;
+}
+
+TEST_F(View, ARecentFileOpensWithAClickAndAMissingOneIsGreyedAndInert) {
+    writeTexturedTriangle(directory / "textured.gltf");
+    writeWhitePixel(directory / "texture.png");
+    const std::string gone = (directory / "gone.gltf").string(), kept = (directory / "textured.gltf").string();
+    fs::create_directories(directory / "vct");
+    std::ofstream(directory / "vct" / "recent") << gone << "\n" << kept << "\n";
+    // The list's first row is the missing file, the second the one that is there.
+    const std::string events = std::string(openSceneSection) +
+                               "1 screenshot before.png; 5 mouse 100 236; 6 button left down; 7 button left up;"
+                               "8 screenshot still.png; 8 screenshot list.png ui; 9 mouse 100 253;"
+                               "10 button left down; 11 button left up; 13 screenshot after.png; 14 quit";
+    ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
+    EXPECT_EQ(log.find("loading " + gone), std::string::npos) << log;
+    EXPECT_LT(changedFraction(screenshot("before.png"), screenshot("still.png")), 0.001);
+    EXPECT_NE(log.find("loading " + kept + "\n"), std::string::npos) << log;
+    EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << "still the Cornell box";
+    EXPECT_EQ(readText(directory / "vct" / "recent"), kept + "\n" + gone + "\n") << "opened moves it first";
 }
 
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
