@@ -3,30 +3,54 @@
 #ifndef VCT_DEBUG_VIEWS_GLSL
 #define VCT_DEBUG_VIEWS_GLSL
 
-// Marches the camera ray through the voxel volume at `mip` and returns the first voxel at
-// least half opaque: albedo, normal (mapped to 0..1) or radiance, per `view`.
+// Walks the camera ray through the texels of one level (Amanatides & Woo 1987) and returns the
+// first occupied one: albedo, normal (mapped to 0..1) or, at level `mip`, radiance, per `view`.
+// Albedo and normal show level 0. Albedo and radiance are shaded by the face the ray entered the
+// texel through, so the voxels read as cubes; normals are shown as they are. (A march in steps of
+// a third of a texel, filtered, found each surface at a depth set by where its steps fell, and drew
+// concentric rings over every wall.)
 vec3 voxelView(ivec2 pixel, uint view, float mip) {
     vec2 ndc = (vec2(pixel) + 0.5f) * frame.inverseRenderSize * 2.0f - 1.0f;
     vec4 nearPoint = frame.inverseViewProjection * vec4(ndc, 0.0f, 1.0f);
     vec4 farPoint = frame.inverseViewProjection * vec4(ndc, 1.0f, 1.0f);
     vec3 origin = worldToGrid(frame.grid, nearPoint.xyz / nearPoint.w);
     vec3 direction = normalize(worldToGrid(frame.grid, farPoint.xyz / farPoint.w) - origin);
+    // No zero component: the walk divides by each.
+    direction = mix(direction, vec3(1e-7f), lessThan(abs(direction), vec3(1e-7f)));
+    int level = view == DEBUG_VOXEL_RADIANCE ? int(mip) : 0;
+    float texel = exp2(float(level));
+    int size = max(int(frame.grid.resolution.x) >> level, 1);
     float resolution = float(frame.grid.resolution.x);
-    float texel = exp2(mip);
-    // Start where the ray enters the grid's box (slab test), step a third of a texel.
+
+    // Where the ray enters the grid's box (slab test), and through which face.
     vec3 inverse = 1.0f / direction;
-    vec3 t0 = (vec3(0.0f) - origin) * inverse;
+    vec3 t0 = -origin * inverse;
     vec3 t1 = (vec3(resolution) - origin) * inverse;
-    float enter = max(max(min(t0.x, t1.x), min(t0.y, t1.y)), max(min(t0.z, t1.z), 0.0f));
+    vec3 nearT = min(t0, t1);
+    float enter = max(max(nearT.x, nearT.y), max(nearT.z, 0.0f));
     float leave = min(min(max(t0.x, t1.x), max(t0.y, t1.y)), max(t0.z, t1.z));
-    for (float t = enter; t < leave; t += texel / 3.0f) {
-        vec3 uvw = (origin + direction * t) / resolution;
-        vec4 radiance = textureLod(voxelRadiance, uvw, mip);
-        float opacity = view == DEBUG_VOXEL_RADIANCE ? radiance.a : textureLod(voxelAlbedo, uvw, 0.0f).a;
-        if (opacity < 0.5f) continue;
-        if (view == DEBUG_VOXEL_ALBEDO) return textureLod(voxelAlbedo, uvw, 0.0f).rgb;
-        if (view == DEBUG_VOXEL_NORMAL) return textureLod(voxelNormal, uvw, 0.0f).xyz * 0.5f + 0.5f;
-        return radiance.rgb / (radiance.a * frame.radianceScale);
+    if (enter >= leave) return vec3(0.0f);
+    int axis = nearT.x >= max(nearT.y, nearT.z) ? 0 : (nearT.y >= nearT.z ? 1 : 2);
+
+    ivec3 cell = clamp(ivec3(floor((origin + direction * enter) / texel)), ivec3(0), ivec3(size - 1));
+    ivec3 stepCell = ivec3(sign(direction));
+    vec3 crossing = abs(texel * inverse);  // ray length across one texel, per axis
+    vec3 nextT = ((vec3(cell) + step(0.0f, direction)) * texel - origin) * inverse;
+    const vec3 faceShade = vec3(1.0f, 0.8f, 0.6f);  // x, y, z faces
+    for (int i = 0; i < 3 * size; ++i) {
+        if (view == DEBUG_VOXEL_RADIANCE) {
+            vec4 radiance = texelFetch(voxelRadiance, cell, level);
+            if (radiance.a > 0.0f) return faceShade[axis] * radiance.rgb / (radiance.a * frame.radianceScale);
+        } else if (texelFetch(voxelAlbedo, cell, 0).a > 0.0f) {
+            if (view == DEBUG_VOXEL_ALBEDO) return faceShade[axis] * texelFetch(voxelAlbedo, cell, 0).rgb;
+            vec3 normal = texelFetch(voxelNormal, cell, 0).xyz;
+            normal = dot(normal, normal) > 0.0f ? normalize(normal) : vec3(0.0f);
+            return normal * 0.5f + 0.5f;  // data: not shaded
+        }
+        axis = nextT.x <= min(nextT.y, nextT.z) ? 0 : (nextT.y <= nextT.z ? 1 : 2);
+        cell[axis] += stepCell[axis];
+        if (cell[axis] < 0 || cell[axis] >= size) break;
+        nextT[axis] += crossing[axis];
     }
     return vec3(0.0f);
 }

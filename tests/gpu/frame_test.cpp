@@ -163,6 +163,27 @@ TEST_F(Frame, TheDepthViewSpansTheSceneFromNearToFar) {
     EXPECT_LT(white, pixels / 100) << "the depth view saturates";
 }
 
+TEST_F(Frame, TheVoxelAlbedoViewShowsTheBackWallInOneColour) {
+    // The Cornell box's back wall above the blocks, seen through its voxels: one albedo under one
+    // face shade. A march in fixed steps, filtered, met the wall at a depth set by where its steps
+    // fell and drew concentric rings over it (its albedo blended with the empty voxels in front).
+    RenderSettings settings = smallSettings();
+    settings.image.width = settings.image.height = 64;
+    settings.shading.debugView = DebugView::VoxelAlbedo;
+    Renderer renderer(gpu(), scene, settings);
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    float lowest = 1e9f, highest = 0.0f;
+    for (uint32_t y = 17; y < 26; ++y) {      // 26-40 % down: between the ceiling and the blocks
+        for (uint32_t x = 19; x < 45; ++x) {  // 30-70 % across
+            lowest = std::min(lowest, image.pixel(x, y)[0]);
+            highest = std::max(highest, image.pixel(x, y)[0]);
+        }
+    }
+    EXPECT_GT(lowest, 0.0f) << "a ray passed through the wall";
+    EXPECT_LT(highest - lowest, 0.01f * highest) << "the wall's voxels show more than one colour";
+}
+
 TEST_F(Frame, DirectLightNeedsNoVoxels) {
     RenderSettings settings = smallSettings();
     settings.shading.mode = RenderMode::Direct;
