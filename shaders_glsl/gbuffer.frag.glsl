@@ -1,6 +1,8 @@
 #version 460
-// G-buffer: world position + material index, shading normal + front-face flag, base colour, and the
-// emissive texture's colour (the shading pass multiplies it with the material's emission).
+// G-buffer: world position + material index, shading normal + front-face flag, base colour +
+// metallic, and the emissive texture's colour (the shading pass multiplies it with the material's
+// emission) + roughness. Four targets, the most Vulkan guarantees (maxColorAttachments ≥ 4): metallic
+// and roughness ride in the alpha channels of the two colour targets.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
@@ -10,7 +12,8 @@ layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial mat
 // (no descriptor-indexing feature needed: lavapipe has none).
 layout(push_constant) uniform Push { uint materialIndex; };
 layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
-layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];  // base colour and emissive, sRGB
+// Base colour and emissive (sRGB), metallic-roughness (linear): the image's format decodes each.
+layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -18,8 +21,8 @@ layout(location = 2) in vec2 uv;
 
 layout(location = 0) out vec4 outPosition;   // xyz, w = material index + 1 (0 = nothing)
 layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = 1 on the front face
-layout(location = 2) out vec4 outBaseColor;  // linear rgb, a
-layout(location = 3) out vec4 outEmissive;   // linear rgb of the emissive texture, 1 without one
+layout(location = 2) out vec4 outBaseColor;  // linear rgb, metallic
+layout(location = 3) out vec4 outEmissive;   // linear rgb of the emissive texture (1 without one), roughness
 
 void main() {
     GpuMaterial material = materials[materialIndex];
@@ -28,6 +31,10 @@ void main() {
         baseColor *= texture(colorTextures[material.baseColorTexture], uv);
     vec3 emissive = vec3(1.0f);
     if (material.emissiveTexture >= 0) emissive = texture(colorTextures[material.emissiveTexture], uv).rgb;
+    vec2 metallicRoughness = vec2(material.metallic, material.roughness);
+    if (material.metallicRoughnessTexture >= 0)
+        metallicRoughness *= texture(colorTextures[material.metallicRoughnessTexture], uv).bg;
+    metallicRoughness = clamp(metallicRoughness, 0.0f, 1.0f);
 
     // Surfaces reflect on both sides (as in the reference path tracer); emission leaves the front only.
     vec3 normal = worldNormal;
@@ -44,6 +51,6 @@ void main() {
 
     outPosition = vec4(worldPosition, float(materialIndex + 1u));
     outNormal = vec4(normal, frontFace ? 1.0f : 0.0f);
-    outBaseColor = baseColor;
-    outEmissive = vec4(emissive, 1.0f);
+    outBaseColor = vec4(baseColor.rgb, metallicRoughness.x);
+    outEmissive = vec4(emissive, metallicRoughness.y);
 }

@@ -22,7 +22,7 @@ struct GpuMaterial {
     float specularWeight;
     int baseColorTexture;  // -1 = none
     int emissiveTexture;   // -1 = none
-    int unused0;
+    int metallicRoughnessTexture;  // -1 = none; linear, blue scales metallic, green roughness (glTF)
     int unused1;
     int unused2;
 };

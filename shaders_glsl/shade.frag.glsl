@@ -11,7 +11,7 @@ layout(set = 0, binding = 4) uniform sampler2DArrayShadow sunShadowMaps;
 layout(set = 0, binding = 5) uniform sampler2DArrayShadow localShadowMaps;
 layout(set = 0, binding = 6) uniform sampler2D gPosition;
 layout(set = 0, binding = 7) uniform sampler2D gNormal;
-layout(set = 0, binding = 8) uniform sampler2D gBaseColor;
+layout(set = 0, binding = 8) uniform sampler2D gBaseColor;  // rgb, metallic
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
 layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
@@ -21,7 +21,7 @@ layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
 // The shadow maps' depths, for the PCF kernel's blocker search (shadows.glsl).
 layout(set = 0, binding = 14) uniform sampler2DArray sunShadowDepths;
 layout(set = 0, binding = 15) uniform sampler2DArray localShadowDepths;
-layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive texture's colour
+layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive texture's colour, roughness
 layout(std430, set = 0, binding = 17) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
 layout(set = 0, binding = 18) uniform sampler2DArrayShadow areaShadowMaps;
 layout(set = 0, binding = 19) uniform sampler2DArray areaShadowDepths;
@@ -100,15 +100,17 @@ void main() {
     surface.position = positionMaterial.xyz;
     surface.normal = normalize(normalFront.xyz);
     surface.toViewer = normalize(frame.cameraPosition - surface.position);
-    surface.baseColor = texelFetch(gBaseColor, pixel, 0).rgb;
-    surface.metallic = material.metallic;
-    surface.roughness = material.roughness;
+    vec4 baseColorMetallic = texelFetch(gBaseColor, pixel, 0);
+    vec4 emissiveRoughness = texelFetch(gEmissive, pixel, 0);
+    surface.baseColor = baseColorMetallic.rgb;
+    surface.metallic = baseColorMetallic.a;
+    surface.roughness = emissiveRoughness.a;
     surface.specularWeight = material.specularWeight;
 
     uint flags = frame.componentFlags;
     vec3 radiance = directLight(surface, flags);
     if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f)
-        radiance += material.emission.rgb * texelFetch(gEmissive, pixel, 0).rgb;
+        radiance += material.emission.rgb * emissiveRoughness.rgb;
     radiance += indirectLight(surface, pixel, flags);
     outRadiance = vec4(radiance, 1.0f);
 }

@@ -16,8 +16,8 @@ struct GBufferPass {
     uint32_t width, height;
     GpuImage position;   // RGBA32F: world position, material index + 1 (0 = background)
     GpuImage normal;     // RGBA16F: normal facing the camera, 1 on front faces
-    GpuImage baseColor;  // RGBA16F: linear base colour
-    GpuImage emissive;   // RGBA16F: the emissive texture's linear colour (1 without one), times the emission
+    GpuImage baseColor;  // RGBA16F: linear base colour, metallic (after its texture)
+    GpuImage emissive;   // RGBA16F: the emissive texture's linear colour (1 without one), roughness
     GpuImage depth;      // D32F
     Pipeline pipeline;
 

@@ -27,12 +27,13 @@ Buffer uploadArray(GpuContext& context, const std::vector<T>& values, VkBufferUs
     return uploadBuffer(context, padded.data(), padded.size() * sizeof(T), usage);
 }
 
-GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, const uint8_t* rgba8) {
+GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, const uint8_t* rgba8, bool srgb) {
     ImageDesc desc;
-    desc.format = VK_FORMAT_R8G8B8A8_SRGB;  // glTF base colour and emissive textures are sRGB-encoded
+    // glTF's colour textures (base colour, emission) are sRGB-encoded, its data textures linear.
+    desc.format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
     desc.extent = {width, height, 1};
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    desc.debugName = "colour texture";
+    desc.debugName = srgb ? "colour texture" : "data texture";
     GpuImage image(context, desc);
     const VkDeviceSize size = VkDeviceSize(width) * height * 4;
     Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
@@ -145,15 +146,16 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         gpu.specularWeight = material.specularWeight;
         gpu.baseColorTexture = material.baseColorTexture;
         gpu.emissiveTexture = material.emissiveTexture;
+        gpu.metallicRoughnessTexture = material.metallicRoughnessTexture;
         gpuMaterials.push_back(gpu);
     }
     materials = uploadArray(context, gpuMaterials, storage);
 
     for (const Texture& texture : scene.textures)
-        textures.push_back(uploadTexture(context, texture.width, texture.height, texture.rgba8.data()));
+        textures.push_back(uploadTexture(context, texture.width, texture.height, texture.rgba8.data(), texture.srgb));
     if (textures.empty()) {
         const uint8_t white[4] = {255, 255, 255, 255};
-        textures.push_back(uploadTexture(context, 1, 1, white));
+        textures.push_back(uploadTexture(context, 1, 1, white, true));
     }
     VkSamplerCreateInfo samplerInfo = linearClampSampler();
     samplerInfo.addressModeU = samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;  // glTF's default wrap

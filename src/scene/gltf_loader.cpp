@@ -41,7 +41,7 @@ struct ParseContext {
     std::string file;
     // tinygltf asks for "<base dir>/<its own decoding of the URI>"; only these paths exist for it.
     std::map<std::string, fs::path> vettedFiles;
-    std::set<int> colorImages;                 // images worth decoding: base colour and emissive
+    std::set<int> colorImages;                 // images worth decoding: base colour, emissive, metallic-roughness
     std::map<int, std::string> imageProblems;  // why an image has no pixels
     // Each distinct image (file, buffer range or data URI) is decoded once, by its first entry;
     // later entries naming the same bytes point at that one.
@@ -237,7 +237,7 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     vet("buffers", true);
     vet("images", false);
 
-    // Only base colour and emissive images are decoded; the others are not used by the renderer.
+    // Only base colour, emissive and metallic-roughness images are decoded; the others are not used.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
     if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
@@ -250,6 +250,7 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     };
     for (const nlohmann::json& material : *materials) {
         decode(member(member(&material, "pbrMetallicRoughness"), "baseColorTexture"));
+        decode(member(member(&material, "pbrMetallicRoughness"), "metallicRoughnessTexture"));
         decode(member(&material, "emissiveTexture"));
     }
 }
@@ -328,7 +329,7 @@ struct Converter {
     const std::map<int, int>& sameImageAs;
     const LoadOptions& options;
     Scene& scene;
-    std::map<int, int> sceneTextureOfImage;  // glTF image → Scene::textures index or -1
+    std::map<std::pair<int, bool>, int> sceneTextureOfImage;  // (glTF image, sRGB) → Scene::textures index or -1
     int defaultMaterial = -1;
 
     void warn(const std::string& path, const std::string& problem) {
@@ -400,17 +401,26 @@ struct Converter {
     // The Scene texture of a material's colour texture (base colour or emissive), decoded once per
     // image; -1 if there is none or its image could not be read (`fallback` says what is used instead).
     int colorTexture(const std::string& materialPath, int textureIndex, const std::string& fallback) {
+        return sceneTexture(materialPath, textureIndex, fallback, true);
+    }
+
+    // A texture of linear data (metallic-roughness).
+    int dataTexture(const std::string& materialPath, int textureIndex, const std::string& fallback) {
+        return sceneTexture(materialPath, textureIndex, fallback, false);
+    }
+
+    int sceneTexture(const std::string& materialPath, int textureIndex, const std::string& fallback, bool srgb) {
         if (textureIndex < 0) return -1;
         const int source = model.textures[size_t(textureIndex)].source;
         if (source < 0) return -1;
         const auto same = sameImageAs.find(source);
         const int imageIndex = same != sameImageAs.end() ? same->second : source;  // decoded once, shared
-        const auto known = sceneTextureOfImage.find(imageIndex);
+        const auto known = sceneTextureOfImage.find({imageIndex, srgb});
         if (known != sceneTextureOfImage.end()) return known->second;
 
         const tinygltf::Image& image = model.images[size_t(imageIndex)];
         const std::string description = image.uri.empty() ? "embedded image" : "'" + image.uri + "'";
-        int sceneTexture = -1;
+        int index = -1;
         if (image.image.empty() || image.component != 4 || image.bits != 8) {
             const auto noted = imageProblems.find(imageIndex);
             const std::string problem =
@@ -422,11 +432,12 @@ struct Converter {
             texture.width = uint32_t(image.width);
             texture.height = uint32_t(image.height);
             texture.rgba8 = image.image;
-            sceneTexture = int(scene.textures.size());
+            texture.srgb = srgb;
+            index = int(scene.textures.size());
             scene.textures.push_back(std::move(texture));
         }
-        sceneTextureOfImage[imageIndex] = sceneTexture;
-        return sceneTexture;
+        sceneTextureOfImage[{imageIndex, srgb}] = index;
+        return index;
     }
 
     // Only TEXCOORD_0 is read (Vertex holds one set).
@@ -462,6 +473,11 @@ struct Converter {
                 warnAboutTexCoord(at("materials", i) + ".emissiveTexture", source.emissiveTexture.texCoord);
             material.metallic = float(pbr.metallicFactor);
             material.roughness = float(pbr.roughnessFactor);
+            material.metallicRoughnessTexture =
+                dataTexture(at("materials", i), pbr.metallicRoughnessTexture.index, "metallic and roughness factors");
+            if (material.metallicRoughnessTexture >= 0)
+                warnAboutTexCoord(at("materials", i) + ".pbrMetallicRoughness.metallicRoughnessTexture",
+                                  pbr.metallicRoughnessTexture.texCoord);
             material.specularWeight =
                 float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
             const double strength =

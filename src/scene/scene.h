@@ -31,6 +31,8 @@ struct Material {
     int baseColorTexture = -1;        // index into Scene::textures, -1 = none
     float metallic = 1.0f;            // glTF defaults
     float roughness = 1.0f;
+    // Index into Scene::textures (linear), -1 = none: blue scales `metallic`, green `roughness`.
+    int metallicRoughnessTexture = -1;
     // KHR_materials_specular specularFactor: 1 = glTF default dielectric (F0 = 0.04),
     // 0 = pure Lambertian (used by the Cornell box, whose reflectances are diffuse).
     float specularWeight = 1.0f;
@@ -39,12 +41,14 @@ struct Material {
     bool doubleSided = false;
 };
 
-// An 8-bit RGBA image holding sRGB-encoded colour: base colour or emission (glTF stores both in sRGB).
+// An 8-bit RGBA image: sRGB-encoded colour (base colour, emission) or linear data (metallic and
+// roughness), as glTF stores each. An image a file uses both ways is two textures.
 struct Texture {
     std::string name;  // the URI or a description, for messages
     uint32_t width = 0;
     uint32_t height = 0;
     std::vector<uint8_t> rgba8;
+    bool srgb = true;
 };
 
 enum class LightType : uint32_t { Directional = 0, Point = 1, Spot = 2 };

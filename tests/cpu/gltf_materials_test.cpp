@@ -69,6 +69,24 @@ TEST(EmissiveTexture, AnImageThatCannotBeReadFallsBackToTheFactorWithAWarning) {
     EXPECT_NE(scene.warnings[0].find("falls back to its emissive factor"), std::string::npos) << scene.warnings[0];
 }
 
+TEST(MetallicRoughnessTexture, IsDecodedAsLinearDataBesideTheSameImageAsColour) {
+    // One image used as the emissive (sRGB) and the metallic-roughness (linear) texture: two scene
+    // textures, each with its own encoding, both holding the image's bytes as they are.
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["materials"][0]["pbrMetallicRoughness"] = {{"metallicRoughnessTexture", {{"index", 0}}}};
+    const Scene scene = loadBuilt(gltf);
+    ASSERT_EQ(scene.textures.size(), 2u);
+    const Material& material = scene.materials[0];
+    ASSERT_GE(material.metallicRoughnessTexture, 0);
+    ASSERT_GE(material.emissiveTexture, 0);
+    EXPECT_NE(material.metallicRoughnessTexture, material.emissiveTexture);
+    EXPECT_FALSE(scene.textures[size_t(material.metallicRoughnessTexture)].srgb);
+    EXPECT_TRUE(scene.textures[size_t(material.emissiveTexture)].srgb);
+    EXPECT_EQ(scene.textures[size_t(material.metallicRoughnessTexture)].rgba8,
+              scene.textures[size_t(material.emissiveTexture)].rgba8);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
 TEST(MaterialTextures, VoxelEmissionIsTheEmissionTimesTheTexturesMeanLinearColour) {
     GltfBuilder gltf = emissiveQuad();
     const Scene scene = loadBuilt(gltf);

@@ -317,6 +317,48 @@ TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     }
 }
 
+TEST(PathTracer, MetallicRoughnessTextureIsLinearAndScalesTheFactors) {
+    // A plane whose factors say white metal (metallic 1, roughness 1) through a one-texel
+    // metallic-roughness texture of blue 128, green 255: metallic 128/255 read linearly, as the same
+    // plane with that factor and no texture renders it (with the same seed, the same paths).
+    auto renderPlane = [](float metallic, bool textured) {
+        Scene scene;
+        Texture texture;
+        texture.width = texture.height = 1;
+        texture.rgba8 = {0, 255, 128, 255};
+        texture.srgb = false;
+        scene.textures.push_back(texture);
+        Material material = lambertian(glm::vec3(1.0f));
+        material.metallic = metallic;
+        material.roughness = 1.0f;
+        material.metallicRoughnessTexture = textured ? 0 : -1;
+        const uint32_t plane = addMaterial(scene, material);
+        for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
+            scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
+        scene.indices = {0, 2, 1, 0, 3, 2};
+        scene.triangleMaterials = {plane, plane};
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+        sun.intensity = kPi;
+        scene.lights.push_back(sun);
+        Camera camera;
+        camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
+        camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
+        camera.up = glm::vec3(0.0f, 0.0f, -1.0f);
+        camera.yfov = 2.0f * std::atan(0.5f);
+        scene.cameras.push_back(camera);
+        return render(createPathTracer(scene), smallRender(scene, 8, 64, Component::Full, 2)).image;
+    };
+    const Image textured = renderPlane(1.0f, true);
+    const Image factor = renderPlane(128.0f / 255.0f, false);
+    const Image metal = renderPlane(1.0f, false);
+    for (uint32_t x = 0; x < 8; ++x) {
+        EXPECT_NEAR(textured.pixel(x, 4)[0], factor.pixel(x, 4)[0], 1e-4f * factor.pixel(x, 4)[0]) << "x " << x;
+        EXPECT_GT(textured.pixel(x, 4)[0], 1.5f * metal.pixel(x, 4)[0]) << "x " << x << ": the texture was ignored";
+    }
+}
+
 // A texture `width` × 1, black on its left half and white on its right (sRGB 0 and 255).
 Texture halfBlackTexture(uint32_t width) {
     Texture texture;

@@ -30,7 +30,21 @@ Scene loadBuilt(GltfBuilder& gltf) {
     return loadGltf(gltf.writeGltf(folder, "scene").string());
 }
 
-class MaterialTextures : public GpuTest {};
+class MaterialTextures : public GpuTest {
+protected:
+    // The quad with this pbrMetallicRoughness (and no dielectric specular: a Lambertian
+    // dielectric), lit by the default sun alone, in direct light.
+    Image renderLitQuad(GltfBuilder& gltf, const json& pbr) {
+        gltf.document["materials"][0] = {{"pbrMetallicRoughness", pbr},
+                                         {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}};
+        gltf.document["extensionsUsed"] = {"KHR_materials_specular"};
+        Scene scene = loadBuilt(gltf);
+        EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+        Renderer renderer(gpu(), scene, directSettings());
+        renderer.renderFrame();
+        return renderer.readImage();
+    }
+};
 
 TEST_F(MaterialTextures, EmissiveTextureHalfBlackLightsHalfTheQuad) {
     // quadFacingCamera: the camera sees u ∈ [0.23, 0.77]; the 8-texel texture is black up to
@@ -57,20 +71,46 @@ TEST_F(MaterialTextures, EmissiveTextureHalfBlackLightsHalfTheQuad) {
 TEST_F(MaterialTextures, FileWithoutLightsIsLitByTheDefaultSun) {
     // A grey Lambertian quad and nothing else: the default sun gives it L = E·cosθ·albedo/π.
     GltfBuilder gltf = quadFacingCamera();
-    gltf.document["materials"][0] = {
-        {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}},
-        {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}};
-    gltf.document["extensionsUsed"] = {"KHR_materials_specular"};
-    Scene scene = loadBuilt(gltf);
-    ASSERT_TRUE(addDefaultSunIfUnlit(scene));
-    Renderer renderer(gpu(), scene, directSettings());
-    renderer.renderFrame();
-    const Image image = renderer.readImage();
+    const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
     const float cosine = -glm::normalize(kDefaultSunTravel).z;
     const float expected = kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
     for (uint32_t y = 0; y < kSize; ++y)
         for (uint32_t x = 0; x < kSize; ++x)
             EXPECT_NEAR(image.pixel(x, y)[0], expected, kRelativeTolerance * expected) << x << "," << y;
+}
+
+TEST_F(MaterialTextures, MetallicRoughnessTextureScalesTheFactorsPerTexel) {
+    // Factors metallic 1, roughness 1; the 8-texel texture (linear: blue = metallic, green =
+    // roughness) is a rough dielectric on its left half and metal of roughness 128/255 on its right
+    // (columns 0-10 and 21-31 see one half each, as in EmissiveTextureHalfBlackLightsHalfTheQuad).
+    // Lit by the default sun: the left half is Lambertian, L = E·cosθ·albedo/π; the right half is
+    // what a metal of that roughness gives from its factors alone. Read as sRGB, 128 would be a
+    // roughness of 0.22.
+    std::vector<uint16_t> texels;
+    for (uint32_t x = 0; x < 8; ++x)
+        texels.insert(texels.end(), {0, uint16_t(x < 4 ? 255 : 128), uint16_t(x < 4 ? 0 : 255), 255});
+    const json white = {0.8, 0.8, 0.8, 1.0};
+    GltfBuilder textured = quadFacingCamera();
+    textured.document["images"] =
+        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
+    textured.document["textures"] = json::array({{{"source", 0}}});
+    const Image image =
+        renderLitQuad(textured, {{"baseColorFactor", white}, {"metallicRoughnessTexture", {{"index", 0}}}});
+    GltfBuilder plain = quadFacingCamera();
+    const Image metal =
+        renderLitQuad(plain, {{"baseColorFactor", white}, {"metallicFactor", 1.0}, {"roughnessFactor", 128.0 / 255.0}});
+
+    const float cosine = -glm::normalize(kDefaultSunTravel).z;
+    const float lambertian = kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x <= 10; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], lambertian, kRelativeTolerance * lambertian) << x << "," << y;
+        for (uint32_t x = 21; x < kSize; ++x) {
+            const float expected = metal.pixel(x, y)[0];
+            EXPECT_GT(expected, 0.0f) << "the metal reflects the sun here";
+            EXPECT_NEAR(image.pixel(x, y)[0], expected, kRelativeTolerance * expected) << x << "," << y;
+        }
+    }
 }
 
 }  // namespace

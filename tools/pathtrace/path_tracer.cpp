@@ -34,8 +34,8 @@ LinearTexture decodeTexture(const Texture& texture) {
         linear.texels = {glm::vec3(1.0f)};  // a missing image leaves the factor alone
         return linear;
     }
-    std::array<float, 256> table;
-    for (int i = 0; i < 256; ++i) table[i] = srgbToLinear(float(i) / 255.0f);
+    std::array<float, 256> table;  // colour textures are sRGB-encoded, data textures linear
+    for (int i = 0; i < 256; ++i) table[i] = texture.srgb ? srgbToLinear(float(i) / 255.0f) : float(i) / 255.0f;
     linear.width = texture.width;
     linear.height = texture.height;
     linear.texels.resize(size_t(texture.width) * texture.height);
@@ -176,8 +176,14 @@ SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::v
         baseColor *= sampleTexture(tracer.textures[material.baseColorTexture], point.uv.x, point.uv.y);
     }
     s.material.baseColor = glm::clamp(baseColor, 0.0f, 1.0f);
-    s.material.metallic = std::clamp(material.metallic, 0.0f, 1.0f);
-    s.material.roughness = std::clamp(material.roughness, 0.0f, 1.0f);
+    glm::vec2 metallicRoughness(material.metallic, material.roughness);
+    if (material.metallicRoughnessTexture >= 0 && size_t(material.metallicRoughnessTexture) < tracer.textures.size()) {
+        const glm::vec3 texel =
+            sampleTexture(tracer.textures[material.metallicRoughnessTexture], point.uv.x, point.uv.y);
+        metallicRoughness *= glm::vec2(texel.b, texel.g);  // glTF: blue = metallic, green = roughness
+    }
+    s.material.metallic = std::clamp(metallicRoughness.x, 0.0f, 1.0f);
+    s.material.roughness = std::clamp(metallicRoughness.y, 0.0f, 1.0f);
     s.material.specularWeight = std::clamp(material.specularWeight, 0.0f, 1.0f);
     return s;
 }
