@@ -5,6 +5,7 @@
 // and roughness ride in the alpha channels of the two colour targets.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
+#include "normal_map.h"
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
@@ -46,7 +47,20 @@ void main() {
     }
     normal = lengthSquared > 0.0f ? normal * inversesqrt(lengthSquared) : vec3(0.0f, 1.0f, 0.0f);
     vec3 toCamera = frame.cameraPosition - worldPosition;
+    // The side is the interpolated normal's; a normal texture tilts the normal of that side.
     bool frontFace = dot(normal, toCamera) >= 0.0f;
+    if (material.normalTexture >= 0) {
+        // ∂position/∂u from screen-space derivatives (no tangents are stored): the same frame the
+        // path tracer takes from the triangle's edges. The ratio is the same whichever way the
+        // screen's y runs.
+        vec2 uvX = dFdx(uv), uvY = dFdy(uv);
+        float determinant = uvX.x * uvY.y - uvY.x * uvX.y;
+        if (abs(determinant) > 1e-20f) {
+            vec3 alongU = (uvY.y * dFdx(worldPosition) - uvX.y * dFdy(worldPosition)) / determinant;
+            vec3 texel = texture(colorTextures[material.normalTexture], uv).rgb;
+            normal = normalFromTexture(normal, alongU, texel, material.normalScale);
+        }
+    }
     if (!frontFace) normal = -normal;
 
     outPosition = vec4(worldPosition, float(materialIndex + 1u));

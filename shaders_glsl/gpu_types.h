@@ -23,8 +23,8 @@ struct GpuMaterial {
     int baseColorTexture;  // -1 = none
     int emissiveTexture;   // -1 = none
     int metallicRoughnessTexture;  // -1 = none; linear, blue scales metallic, green roughness (glTF)
-    int unused1;
-    int unused2;
+    int normalTexture;             // -1 = none; linear, tangent space (glTF)
+    float normalScale;             // scales the normal texture's x and y
 };
 
 struct GpuLight {

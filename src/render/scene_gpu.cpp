@@ -82,7 +82,7 @@ void checkSceneCanBeRendered(const Scene& scene) {
         const glm::vec4 color = material.baseColorFactor;
         if (!finite(glm::vec3(color)) || !std::isfinite(color.a) || !finite(material.emission) ||
             !std::isfinite(material.metallic) || !std::isfinite(material.roughness) ||
-            !std::isfinite(material.specularWeight))
+            !std::isfinite(material.specularWeight) || !std::isfinite(material.normalScale))
             fail("material " + std::to_string(i) + " ('" + material.name +
                  "') holds a value that is not a finite number");
     }
@@ -147,6 +147,8 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         gpu.baseColorTexture = material.baseColorTexture;
         gpu.emissiveTexture = material.emissiveTexture;
         gpu.metallicRoughnessTexture = material.metallicRoughnessTexture;
+        gpu.normalTexture = material.normalTexture;
+        gpu.normalScale = material.normalScale;
         gpuMaterials.push_back(gpu);
     }
     materials = uploadArray(context, gpuMaterials, storage);

@@ -41,7 +41,7 @@ struct ParseContext {
     std::string file;
     // tinygltf asks for "<base dir>/<its own decoding of the URI>"; only these paths exist for it.
     std::map<std::string, fs::path> vettedFiles;
-    std::set<int> colorImages;                 // images worth decoding: base colour, emissive, metallic-roughness
+    std::set<int> colorImages;  // images worth decoding: base colour, emissive, metallic-roughness, normal
     std::map<int, std::string> imageProblems;  // why an image has no pixels
     // Each distinct image (file, buffer range or data URI) is decoded once, by its first entry;
     // later entries naming the same bytes point at that one.
@@ -237,7 +237,7 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     vet("buffers", true);
     vet("images", false);
 
-    // Only base colour, emissive and metallic-roughness images are decoded; the others are not used.
+    // Only base colour, emissive, metallic-roughness and normal images are decoded; the others are not used.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
     if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
@@ -251,6 +251,7 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     for (const nlohmann::json& material : *materials) {
         decode(member(member(&material, "pbrMetallicRoughness"), "baseColorTexture"));
         decode(member(member(&material, "pbrMetallicRoughness"), "metallicRoughnessTexture"));
+        decode(member(&material, "normalTexture"));
         decode(member(&material, "emissiveTexture"));
     }
 }
@@ -404,7 +405,7 @@ struct Converter {
         return sceneTexture(materialPath, textureIndex, fallback, true);
     }
 
-    // A texture of linear data (metallic-roughness).
+    // A texture of linear data (metallic-roughness, normals).
     int dataTexture(const std::string& materialPath, int textureIndex, const std::string& fallback) {
         return sceneTexture(materialPath, textureIndex, fallback, false);
     }
@@ -478,6 +479,11 @@ struct Converter {
             if (material.metallicRoughnessTexture >= 0)
                 warnAboutTexCoord(at("materials", i) + ".pbrMetallicRoughness.metallicRoughnessTexture",
                                   pbr.metallicRoughnessTexture.texCoord);
+            material.normalTexture =
+                dataTexture(at("materials", i), source.normalTexture.index, "interpolated vertex normals");
+            material.normalScale = float(source.normalTexture.scale);
+            if (material.normalTexture >= 0)
+                warnAboutTexCoord(at("materials", i) + ".normalTexture", source.normalTexture.texCoord);
             material.specularWeight =
                 float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
             const double strength =

@@ -33,6 +33,10 @@ struct Material {
     float roughness = 1.0f;
     // Index into Scene::textures (linear), -1 = none: blue scales `metallic`, green `roughness`.
     int metallicRoughnessTexture = -1;
+    // Index into Scene::textures (linear), -1 = none: the tangent-space normal (glTF: +x along
+    // increasing u, +y up the image), its x and y scaled by `normalScale`.
+    int normalTexture = -1;
+    float normalScale = 1.0f;
     // KHR_materials_specular specularFactor: 1 = glTF default dielectric (F0 = 0.04),
     // 0 = pure Lambertian (used by the Cornell box, whose reflectances are diffuse).
     float specularWeight = 1.0f;
@@ -42,7 +46,7 @@ struct Material {
 };
 
 // An 8-bit RGBA image: sRGB-encoded colour (base colour, emission) or linear data (metallic and
-// roughness), as glTF stores each. An image a file uses both ways is two textures.
+// roughness, normals), as glTF stores each. An image a file uses both ways is two textures.
 struct Texture {
     std::string name;  // the URI or a description, for messages
     uint32_t width = 0;

@@ -87,6 +87,17 @@ TEST(MetallicRoughnessTexture, IsDecodedAsLinearDataBesideTheSameImageAsColour) 
     EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
 }
 
+TEST(NormalTexture, IsDecodedAsLinearDataWithItsScale) {
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["materials"][0]["normalTexture"] = {{"index", 0}, {"scale", 0.5}};
+    const Scene scene = loadBuilt(gltf);
+    const Material& material = scene.materials[0];
+    ASSERT_GE(material.normalTexture, 0);
+    EXPECT_FALSE(scene.textures[size_t(material.normalTexture)].srgb);
+    EXPECT_EQ(material.normalScale, 0.5f);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
 TEST(MaterialTextures, VoxelEmissionIsTheEmissionTimesTheTexturesMeanLinearColour) {
     GltfBuilder gltf = emissiveQuad();
     const Scene scene = loadBuilt(gltf);

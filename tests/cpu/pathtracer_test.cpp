@@ -359,6 +359,59 @@ TEST(PathTracer, MetallicRoughnessTextureIsLinearAndScalesTheFactors) {
     }
 }
 
+TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
+    // A Lambertian plane facing up (u along +x, v along +z, so up the image is −z) with an 8-texel
+    // normal texture tilted 30° along +u on its left half and 30° up the image on its right, lit by
+    // a sun of E = π: L = max(n'·l, 0). The camera sees u ∈ [¼, ¾]; columns 0-5 and 10-15 see one
+    // half each.
+    const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
+    const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
+    Scene scene;
+    Texture texture;
+    texture.width = 8;
+    texture.height = 1;
+    texture.srgb = false;
+    for (uint32_t x = 0; x < 8; ++x)
+        texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
+    scene.textures.push_back(texture);
+    Material material = lambertian(glm::vec3(1.0f));
+    material.normalTexture = 0;
+    const uint32_t plane = addMaterial(scene, material);
+    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
+        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
+    scene.indices = {0, 2, 1, 0, 3, 2};
+    scene.triangleMaterials = {plane, plane};
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.6f, -1.0f, -0.5f));
+    sun.intensity = kPi;
+    scene.lights.push_back(sun);
+    Camera camera;
+    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
+    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
+    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
+    scene.cameras.push_back(camera);
+    const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
+
+    auto expected = [&](glm::vec3 texel) {
+        const glm::vec3 local = glm::normalize(texel / 255.0f * 2.0f - 1.0f);
+        const glm::vec3 normal =
+            local.x * glm::vec3(1, 0, 0) + local.y * glm::vec3(0, 0, -1) + local.z * glm::vec3(0, 1, 0);
+        return std::max(glm::dot(normal, -sun.direction), 0.0f);
+    };
+    const float alongU = expected(glm::vec3(tilt, 128, up)), upImage = expected(glm::vec3(128, tilt, up));
+    // Tilts the other way would give other light.
+    ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up))), 0.2f * alongU);
+    ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up))), 0.2f * upImage);
+    for (uint32_t y = 4; y < 12; ++y) {
+        for (uint32_t x = 0; x <= 5; ++x)
+            EXPECT_NEAR(result.image.pixel(x, y)[0], alongU, 0.01f * alongU) << x << "," << y;
+        for (uint32_t x = 10; x < 16; ++x)
+            EXPECT_NEAR(result.image.pixel(x, y)[0], upImage, 0.01f * upImage) << x << "," << y;
+    }
+}
+
 // A texture `width` × 1, black on its left half and white on its right (sRGB 0 and 255).
 Texture halfBlackTexture(uint32_t width) {
     Texture texture;

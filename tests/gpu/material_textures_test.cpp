@@ -35,8 +35,9 @@ protected:
     // The quad with this pbrMetallicRoughness (and no dielectric specular: a Lambertian
     // dielectric), lit by the default sun alone, in direct light.
     Image renderLitQuad(GltfBuilder& gltf, const json& pbr) {
-        gltf.document["materials"][0] = {{"pbrMetallicRoughness", pbr},
-                                         {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}};
+        json& material = gltf.document["materials"][0];  // keeps what the test set (a normal texture)
+        material["pbrMetallicRoughness"] = pbr;
+        material["extensions"] = {{"KHR_materials_specular", {{"specularFactor", 0.0}}}};
         gltf.document["extensionsUsed"] = {"KHR_materials_specular"};
         Scene scene = loadBuilt(gltf);
         EXPECT_TRUE(addDefaultSunIfUnlit(scene));
@@ -110,6 +111,41 @@ TEST_F(MaterialTextures, MetallicRoughnessTextureScalesTheFactorsPerTexel) {
             EXPECT_GT(expected, 0.0f) << "the metal reflects the sun here";
             EXPECT_NEAR(image.pixel(x, y)[0], expected, kRelativeTolerance * expected) << x << "," << y;
         }
+    }
+}
+
+TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
+    // A Lambertian quad whose 8-texel normal texture tilts the normal 30° along +u (towards +x, the
+    // tangent) on its left half and 30° up the image (+y, the bitangent) on its right, under the
+    // default sun: L = E·max(n'·l, 0)·albedo/π with n' the tilted normal, which a wrong sign on
+    // either axis would tilt the other way.
+    const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
+    const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
+    std::vector<uint16_t> texels;
+    for (uint32_t x = 0; x < 8; ++x)
+        texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
+    GltfBuilder gltf = quadFacingCamera();
+    gltf.document["images"] =
+        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
+    const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
+
+    auto expected = [&](glm::vec3 texel) {
+        const glm::vec3 normal = glm::normalize(texel * 2.0f - 1.0f);  // tangent x, bitangent y, normal z
+        const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
+        return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
+    };
+    const float alongU = expected(glm::vec3(tilt, 128, up) / 255.0f);
+    const float upImage = expected(glm::vec3(128, tilt, up) / 255.0f);
+    // Tilts the other way would give other light.
+    ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up) / 255.0f)), 0.2f * alongU);
+    ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up) / 255.0f)), 0.2f * upImage);
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x <= 10; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], alongU, kRelativeTolerance * alongU) << x << "," << y;
+        for (uint32_t x = 21; x < kSize; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], upImage, kRelativeTolerance * upImage) << x << "," << y;
     }
 }
 

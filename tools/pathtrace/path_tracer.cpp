@@ -12,6 +12,7 @@
 #include "bsdf.h"
 #include "error.h"
 #include "lights.h"
+#include "normal_map.h"
 #include "scene/material_textures.h"
 
 namespace vct::pt {
@@ -67,6 +68,7 @@ struct TrianglePoint {
     glm::vec3 geometricNormal;  // from the counter-clockwise winding
     glm::vec3 shadingNormal;    // interpolated vertex normal
     glm::vec2 uv;
+    glm::vec3 alongU;  // ∂position/∂u over the triangle (zero where its texture coordinates are degenerate)
 };
 
 TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, float b2) {
@@ -84,6 +86,12 @@ TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, f
     point.geometricNormal = crossLength > 0.0f ? cross / crossLength : glm::vec3(0.0f, 0.0f, 1.0f);
     point.shadingNormal =
         shadingLength > 1e-12f && std::isfinite(shadingLength) ? shading / shadingLength : point.geometricNormal;
+    const glm::vec2 uv1 = glm::vec2(v1.u, v1.v) - glm::vec2(v0.u, v0.v);
+    const glm::vec2 uv2 = glm::vec2(v2.u, v2.v) - glm::vec2(v0.u, v0.v);
+    const float determinant = uv1.x * uv2.y - uv2.x * uv1.y;
+    point.alongU = std::abs(determinant) > 1e-20f
+                       ? (uv2.y * (v1.position - v0.position) - uv1.y * (v2.position - v0.position)) / determinant
+                       : glm::vec3(0.0f);
     return point;
 }
 
@@ -166,8 +174,14 @@ SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::v
     SurfacePoint s;
     s.position = point.position;
     s.toViewer = -rayDirection;
+    // The side is the interpolated normal's; a normal texture tilts the normal of that side.
     const bool frontFace = glm::dot(point.shadingNormal, s.toViewer) > 0.0f;
-    s.shadingNormal = frontFace ? point.shadingNormal : -point.shadingNormal;
+    glm::vec3 shadingNormal = point.shadingNormal;
+    if (material.normalTexture >= 0 && size_t(material.normalTexture) < tracer.textures.size()) {
+        const glm::vec3 texel = sampleTexture(tracer.textures[material.normalTexture], point.uv.x, point.uv.y);
+        shadingNormal = glsl::normalFromTexture(shadingNormal, point.alongU, texel, material.normalScale);
+    }
+    s.shadingNormal = frontFace ? shadingNormal : -shadingNormal;
     s.geometricNormal =
         glm::dot(point.geometricNormal, s.toViewer) >= 0.0f ? point.geometricNormal : -point.geometricNormal;
     s.emission = frontFace ? emissionAt(tracer, material, point.uv) : glm::vec3(0.0f);
