@@ -28,10 +28,8 @@ struct Tolerances {
     // Mean inside a closed block / usual view's (truth 0). Measured 0.23 with one bounce and
     // two-sided voxels; 0.41 since voxels are one-sided (transparent from behind, which removes
     // self-illumination) and the light converges: from inside, the block's faces are seen from
-    // behind. 0.47 since cone steps no longer skip texels (cone_tracing.glsl, marchStep): the
-    // block's far faces, whose voxels hold its lit outside and dark inside together, are met in
-    // full. Two-layer thin walls would bring it back to ~0.
-    double insideGeometry = 0.5;
+    // behind. Two-layer thin walls would bring it back to ~0.
+    double insideGeometry = 0.45;
 };
 constexpr Tolerances kTolerances;
 
