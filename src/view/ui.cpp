@@ -143,7 +143,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
         nullptr, int(debugViewCount));
     settings.shading.debugView = DebugView(view);
     int mip = int(settings.shading.debugVoxelMip);
-    ImGui::SliderInt("voxel mip", &mip, 0, int(facts.voxelMips) - 1);
+    ImGui::SliderInt("radiance view mip", &mip, 0, int(facts.voxelMips) - 1);
     settings.shading.debugVoxelMip = uint32_t(std::clamp(mip, 0, int(facts.voxelMips) - 1));
     ImGui::Checkbox("voxel grid bounds (G)", &state.showGridBounds);
 }
@@ -397,7 +397,7 @@ void drawGuideWindow(ViewerState& state) {
          "shadows, area lights"},
         {"M", "mode: full, direct, indirect"},
         {"V", "next view: lit, base colour, normal, depth, AO, voxels"},
-        {"[ / ]", "voxel mip shown by the voxel views"},
+        {"[ / ]", "voxel mip shown by the voxel radiance view"},
         {"L", "animate the sun"},
         {"G", "draw the voxel grid's box: amber lines over the image, edges behind the scene included"},
         {"F12 or P", "screenshot (PNG in the current folder)"},

@@ -277,15 +277,16 @@ TEST_F(View, ScreenshotKeyWritesAPngInTheCurrentFolder) {
 }
 
 TEST_F(View, BracketKeysFromAScriptStepThroughTheVoxelMips) {
-    // V five times: voxel albedo. ] shows the next coarser mip, [ the finer one again; ] past the
-    // last mip stays on it (the panels are hidden, so nothing else clamps it; the validation layer
-    // would report a level past the image's).
-    const std::string events = std::string(hidePanels) +
-                               "1 key V press; 2 key V press; 3 key V press; 4 key V press; 5 key V press;"
-                               "6 screenshot mip0.png; 7 key ] press; 8 screenshot mip1.png; 9 key [ press;"
-                               "10 screenshot back.png; 11 key ] press; 12 key ] press; 13 key ] press; 14 key ] press;"
-                               "15 key ] press; 16 key ] press; 17 key ] press; 18 key ] press; 19 screenshot last.png;"
-                               "20 quit";
+    // V seven times: voxel radiance (albedo and normals are level-0 data). ] shows the next coarser
+    // mip, [ the finer one again; ] past the last mip stays on it (the panels are hidden, so nothing
+    // else clamps it; the validation layer would report a level past the image's).
+    const std::string events =
+        std::string(hidePanels) +
+        "1 key V press; 2 key V press; 3 key V press; 4 key V press; 5 key V press;"
+        "6 key V press; 7 key V press; 8 screenshot mip0.png; 9 key ] press; 10 screenshot mip1.png;"
+        "11 key [ press; 12 screenshot back.png; 13 key ] press; 14 key ] press; 15 key ] press;"
+        "16 key ] press; 17 key ] press; 18 key ] press; 19 key ] press; 20 key ] press;"
+        "21 screenshot last.png; 22 quit";
     ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
     EXPECT_GT(changedFraction(screenshot("mip0.png"), screenshot("mip1.png")), 0.05) << log;
     EXPECT_LT(changedFraction(screenshot("mip0.png"), screenshot("back.png")), 0.001) << log;
