@@ -275,6 +275,28 @@ TEST(PathTracer, PunctualLightsOverLambertianPlaneFollowTheirFalloff) {
     }
 }
 
+// `scene` (its textures set) plus a 2 × 2 plane facing up with `material`, u = (x + 1)/2 and
+// v = (z + 1)/2, lit by a sun of E = π travelling along `sunTravel`, and a camera above looking
+// down that sees x, z ∈ [−½, ½] with image right = +x (so up the image is −z).
+void addSunlitPlaneSeenFromAbove(Scene& scene, const Material& material, glm::vec3 sunTravel) {
+    const uint32_t plane = addMaterial(scene, material);
+    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
+        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
+    scene.indices = {0, 2, 1, 0, 3, 2};
+    scene.triangleMaterials = {plane, plane};
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(sunTravel);
+    sun.intensity = kPi;
+    scene.lights.push_back(sun);
+    Camera camera;
+    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
+    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
+    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
+    scene.cameras.push_back(camera);
+}
+
 TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     // A 2 × 1 texture (sRGB red 255 | green 128) on a plane with u = (x + 1)/2, lit straight down by a
     // directional light of E = π, so radiance = base colour. The camera sees u ∈ [¼, ¾], between the
@@ -287,23 +309,7 @@ TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     scene.textures.push_back(texture);
     Material material = lambertian(glm::vec3(1.0f, 0.5f, 1.0f));
     material.baseColorTexture = 0;
-    const uint32_t plane = addMaterial(scene, material);
-    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
-        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
-    }
-    scene.indices = {0, 2, 1, 0, 3, 2};
-    scene.triangleMaterials = {plane, plane};
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    sun.intensity = kPi;
-    scene.lights.push_back(sun);
-    Camera camera;
-    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
-    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
-    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
-    scene.cameras.push_back(camera);
+    addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.0f, -1.0f, 0.0f));
     const PathTracer tracer = createPathTracer(scene);
     const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 2));
 
@@ -332,22 +338,7 @@ TEST(PathTracer, MetallicRoughnessTextureIsLinearAndScalesTheFactors) {
         material.metallic = metallic;
         material.roughness = 1.0f;
         material.metallicRoughnessTexture = textured ? 0 : -1;
-        const uint32_t plane = addMaterial(scene, material);
-        for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
-            scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
-        scene.indices = {0, 2, 1, 0, 3, 2};
-        scene.triangleMaterials = {plane, plane};
-        Light sun;
-        sun.type = LightType::Directional;
-        sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-        sun.intensity = kPi;
-        scene.lights.push_back(sun);
-        Camera camera;
-        camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
-        camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-        camera.up = glm::vec3(0.0f, 0.0f, -1.0f);
-        camera.yfov = 2.0f * std::atan(0.5f);
-        scene.cameras.push_back(camera);
+        addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.0f, -1.0f, 0.0f));
         return render(createPathTracer(scene), smallRender(scene, 8, 64, Component::Full, 2)).image;
     };
     const Image textured = renderPlane(1.0f, true);
@@ -376,29 +367,15 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     scene.textures.push_back(texture);
     Material material = lambertian(glm::vec3(1.0f));
     material.normalTexture = 0;
-    const uint32_t plane = addMaterial(scene, material);
-    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
-        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
-    scene.indices = {0, 2, 1, 0, 3, 2};
-    scene.triangleMaterials = {plane, plane};
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.6f, -1.0f, -0.5f));
-    sun.intensity = kPi;
-    scene.lights.push_back(sun);
-    Camera camera;
-    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
-    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
-    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
-    scene.cameras.push_back(camera);
+    addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
+    const glm::vec3 toSun = -scene.lights.back().direction;
     const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
 
     auto expected = [&](glm::vec3 texel) {
         const glm::vec3 local = glm::normalize(texel / 255.0f * 2.0f - 1.0f);
         const glm::vec3 normal =
             local.x * glm::vec3(1, 0, 0) + local.y * glm::vec3(0, 0, -1) + local.z * glm::vec3(0, 1, 0);
-        return std::max(glm::dot(normal, -sun.direction), 0.0f);
+        return std::max(glm::dot(normal, toSun), 0.0f);
     };
     const float alongU = expected(glm::vec3(tilt, 128, up)), upImage = expected(glm::vec3(128, tilt, up));
     // Tilts the other way would give other light.
