@@ -96,8 +96,9 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
         // Stop once the footprint has left the grid (outside is transparent black): a cone that
         // stopped when its centre left would skip a wall lying in the grid's last voxels.
         if (any(lessThan(position, vec3(-0.5f * diameter))) ||
-            any(greaterThan(position, vec3(resolution + 0.5f * diameter))))
+            any(greaterThan(position, vec3(resolution + 0.5f * diameter)))) {
             break;
+        }
         vec3 uvw = position / resolution;
         float stepLength = marchStep(diameter, stepFraction);
 
@@ -141,6 +142,10 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     }
     ConeResult result;
     result.radiance = color / frame.radianceScale;
+    // What the cone did not meet, having left the grid or gone its maximum distance, it meets in
+    // the sky (a cone the maximum distance cuts short inside a room sees the sky through its walls:
+    // the distance is a setting for open scenes).
+    if (alpha < stopOpacity) result.radiance += (1.0f - alpha) * frame.environment.rgb;
     result.occlusion = clamp(occlusion, 0.0f, 1.0f);
     return result;
 }

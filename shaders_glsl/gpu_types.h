@@ -95,6 +95,7 @@ struct FrameConstants {
     uint debugVoxelMip;   // the mip level the voxel debug views show
     uint diffuseDownscale;  // diffuse cones traced once per diffuseDownscale² samples (1 = every sample)
     uint unused1;
+    vec4 environment;  // rgb: the sky's radiance (Scene::environment), seen by cones that leave the grid
 };
 
 // What the shading pass shows instead of light (FrameConstants.debugView), for understanding.

@@ -90,7 +90,9 @@ void main() {
         return;
     }
     if (positionMaterial.w < 0.5f) {
-        outRadiance = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // no environment light: nothing behind the scene
+        // Nothing in front of the camera: it sees the sky, emitted light as a lamp seen is.
+        vec3 sky = (frame.componentFlags & SHOW_EMISSION) != 0u ? frame.environment.rgb : vec3(0.0f);
+        outRadiance = vec4(sky, 1.0f);
         return;
     }
     vec4 normalFront = texelFetch(gNormal, pixel, 0);

@@ -137,7 +137,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
         LoadOptions loadOptions;
         loadOptions.bufferLimits = sceneBufferLimits(context);
         Scene scene = loadScene(scenes[i], loadOptions);
-        addDefaultSunIfUnlit(scene);
+        addDefaultSunAndSkyIfUnlit(scene);
         progress.hideWhile([&] {
             for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
         });

@@ -115,7 +115,7 @@ std::vector<Option> makeSharedOptions() {
         {"cone-step", "F", "cone step as a fraction of its diameter",
          [](const V& v, S& s) { s.shading.coneStep = v.number(0.05f, 4.0f); },
          [](const S& s) { return number(s.shading.coneStep); }},
-        {"cone-max-distance", "F", "longest cone, as a fraction of the grid's side",
+        {"cone-max-distance", "F", "longest cone, as a fraction of the grid's side; past it a cone sees the sky",
          [](const V& v, S& s) { s.shading.coneMaxDistance = v.number(0.01f, 2.0f); },
          [](const S& s) { return number(s.shading.coneMaxDistance); }},
         {"cone-start-offset", "VOXELS", "gap between the surface and a cone's apex",
@@ -138,6 +138,9 @@ std::vector<Option> makeSharedOptions() {
         {"light-intensity", "E",
          "illuminance (lux) of the scene's first sun, or of the one --light-dir adds (default 3); "
          "refused without --light-dir if the scene has no sun"},
+        {"environment", "R,G,B",
+         "radiance of a uniform sky that every ray leaving the scene sees (default black; a scene "
+         "without light gets a default sky with its default sun)"},
         {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},
         {"validate", "", "enable the Khronos validation layer"},
         {"strict", "", "treat scene warnings (e.g. a missing texture) as errors"},

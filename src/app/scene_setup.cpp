@@ -21,6 +21,10 @@ SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
         throw Error("--light-dir must not be the zero vector");
     if (arguments.has("light-intensity"))
         overrides.lightIntensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
+    overrides.environment = arguments.vector3("environment");
+    if (overrides.environment && !(glm::all(glm::greaterThanEqual(*overrides.environment, glm::vec3(0.0f))) &&
+                                   glm::all(glm::lessThanEqual(*overrides.environment, glm::vec3(1e9f)))))
+        throw Error("--environment must be a radiance from 0 to 1e9 in each of red, green and blue");
     return overrides;
 }
 
@@ -48,8 +52,10 @@ Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits
     options.allowedRoot = arguments.text("allowed-root", "");
     Scene scene = loadScene(arguments.text("scene", "cornell"), options);
     const SceneOverrides overrides = sceneOverridesFromArguments(arguments);
-    // --light-dir's sun is light enough; --light-intensity alone sets the default sun's.
-    if (!overrides.lightDirection) addDefaultSunIfUnlit(scene);
+    // --light-dir's sun is light enough, and so is --environment's sky; --light-intensity alone
+    // sets the default sun's.
+    if (overrides.environment) scene.environment = *overrides.environment;
+    if (!overrides.lightDirection) addDefaultSunAndSkyIfUnlit(scene);
     applySceneOverrides(overrides, scene);
     return scene;
 }

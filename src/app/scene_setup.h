@@ -13,13 +13,14 @@
 
 namespace vct {
 
-// --camera-pos/--camera-target/--fov and --light-dir/--light-intensity, read and checked before
+// --camera-pos/--camera-target/--fov, --light-dir/--light-intensity and --environment, read and checked before
 // the scene loads.
 struct SceneOverrides {
     std::optional<glm::vec3> cameraPosition, cameraTarget;
     std::optional<float> yfovDegrees;
     std::optional<glm::vec3> lightDirection;  // not the zero vector
     std::optional<float> lightIntensity;
+    std::optional<glm::vec3> environment;  // finite, not negative
 };
 SceneOverrides sceneOverridesFromArguments(const Arguments& arguments);
 

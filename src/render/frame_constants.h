@@ -17,11 +17,12 @@ static_assert(offsetof(FrameConstants, lightCount) == 172);      // and a scalar
 static_assert(offsetof(FrameConstants, debugView) == 188);
 static_assert(offsetof(FrameConstants, renderSize) == 192);  // a vec2 starts on 8 bytes
 static_assert(offsetof(FrameConstants, inverseRenderSize) == 200);
+static_assert(offsetof(FrameConstants, environment) == 272);  // a vec4 starts on 16 bytes
 static_assert(offsetof(FrameConstants, ambientFactor) == 208);
 static_assert(offsetof(FrameConstants, radianceScale) == 220);
 static_assert(offsetof(FrameConstants, coneTanHalfAperture) == 224);
 static_assert(offsetof(FrameConstants, diffuseConeCount) == 252);
 static_assert(offsetof(FrameConstants, debugVoxelMip) == 260);
-static_assert(sizeof(FrameConstants) == 272);  // a multiple of 16, as a std140 struct
+static_assert(sizeof(FrameConstants) == 288);  // a multiple of 16, as a std140 struct
 
 }  // namespace vct::glsl

@@ -79,7 +79,10 @@ void Renderer::setGeometry(const Scene& scene) {
     sceneBounds_ = local.bounds();
     areaLights_ = findAreaLights(local);
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
-    brightestEmission_ = 0.0f;
+    environment_ = scene.environment;
+    // The sky stands beside the brightest emitter in the voxels' storage scale: light it bounces
+    // into a scene lit by nothing else must fit in float16 as well.
+    brightestEmission_ = std::max({environment_.r, environment_.g, environment_.b});
     anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
         return material.metallic > 0.0f || material.specularWeight > 0.0f;
     });
@@ -188,6 +191,7 @@ void Renderer::writeFrameConstants() {
     constants.skipEmptySpace = shading.skipEmptySpace ? 1u : 0u;
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
+    constants.environment = glm::vec4(environment_, 0.0f);
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
 }
 

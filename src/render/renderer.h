@@ -98,6 +98,7 @@ private:
     Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
     Camera camera_;
     std::vector<Light> lights_;
+    glm::vec3 environment_{0.0f};        // Scene::environment
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass

@@ -9,6 +9,7 @@ namespace vct {
 
 bool sceneHasLight(const Scene& scene) {
     if (!scene.lights.empty()) return true;
+    if (scene.environment.r > 0.0f || scene.environment.g > 0.0f || scene.environment.b > 0.0f) return true;
     std::vector<char> emits;
     for (const Material& material : scene.materials) {
         const glm::vec3 emission = voxelEmission(scene, material);
@@ -19,7 +20,7 @@ bool sceneHasLight(const Scene& scene) {
     return false;
 }
 
-bool addDefaultSunIfUnlit(Scene& scene) {
+bool addDefaultSunAndSkyIfUnlit(Scene& scene) {
     if (sceneHasLight(scene)) return false;
     Light sun;
     sun.name = kDefaultSunName;
@@ -27,11 +28,13 @@ bool addDefaultSunIfUnlit(Scene& scene) {
     sun.direction = glm::normalize(kDefaultSunTravel);
     sun.intensity = kDefaultSunIlluminance;
     scene.lights.push_back(sun);
-    char text[200];
+    scene.environment = kDefaultSkyRadiance;
+    char text[300];
     std::snprintf(text, sizeof text,
-                  ": no light and no emissive surface, so a default sun is added: travelling along (%.2f, %.2f, "
-                  "%.2f), %g lux",
-                  sun.direction.x, sun.direction.y, sun.direction.z, sun.intensity);
+                  ": no light, sky or emissive surface, so a default sun and sky are added: the sun travelling "
+                  "along (%.2f, %.2f, %.2f) at %g lux, the sky of radiance (%g, %g, %g)",
+                  sun.direction.x, sun.direction.y, sun.direction.z, sun.intensity, kDefaultSkyRadiance.r,
+                  kDefaultSkyRadiance.g, kDefaultSkyRadiance.b);
     scene.warnings.push_back(scene.name + text);
     return true;
 }

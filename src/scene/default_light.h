@@ -13,13 +13,16 @@ namespace vct {
 inline constexpr glm::vec3 kDefaultSunTravel{0.3f, -1.0f, -0.6f};  // normalised where used
 inline constexpr float kDefaultSunIlluminance = 3.0f;              // lux, as --light-dir's sun
 inline constexpr const char* kDefaultSunName = "default sun";
+// A pale blue sky beside it, radiance in scene units: its irradiance on open ground, π·L, is about
+// a sixth of the sun's there, as on a clear day, so faces the sun does not reach are not black.
+inline constexpr glm::vec3 kDefaultSkyRadiance{0.11f, 0.14f, 0.18f};
 
-// True if the scene has a light or a triangle that emits (its emission times its emissive
-// texture's mean is not black).
+// True if the scene has a light, a sky (Scene::environment not black) or a triangle that emits
+// (its emission times its emissive texture's mean is not black).
 bool sceneHasLight(const Scene& scene);
 
-// Adds the default sun to a scene without light, and a warning naming it (direction and
-// illuminance) to scene.warnings, which every command prints. Returns whether it added one.
-bool addDefaultSunIfUnlit(Scene& scene);
+// Adds the default sun and sky to a scene without light, and a warning naming them (direction,
+// illuminance, radiance) to scene.warnings, which every command prints. Returns whether it did.
+bool addDefaultSunAndSkyIfUnlit(Scene& scene);
 
 }  // namespace vct

@@ -96,7 +96,10 @@ struct Scene {
     std::vector<Material> materials;          // never empty after loading (a default is added)
     std::vector<Texture> textures;
     std::vector<Light> lights;
-    std::vector<Camera> cameras;        // the first is the default view
+    std::vector<Camera> cameras;  // the first is the default view
+    // Radiance (scene units) of the sky that every ray leaving the scene sees, the same in every
+    // direction: black unless the command line sets it or the scene has no light of its own.
+    glm::vec3 environment{0.0f};
     std::vector<std::string> warnings;  // non-fatal problems met while loading
 
     size_t triangleCount() const { return indices.size() / 3; }

@@ -288,10 +288,10 @@ case "$case_name" in
       "$vct" render "${small[@]}" --scene "$work/unlit.gltf" --mode direct "${extra[@]}" \
         --out "$work/unlit-$intensity.pfm" >"$work/stdout" 2>"$work/stderr" || fail "the render failed"
     done
-    notes=$(grep -c "default sun is added: travelling along (0.25, -0.83, -0.50), 3 lux" "$work/stderr")
-    [ "$notes" -eq 1 ] || fail "$notes lines name the default sun, expected 1"
+    notes=$(grep -c "default sun and sky are added: the sun travelling along (0.25, -0.83, -0.50) at 3 lux, the sky of radiance (0.11, 0.14, 0.18)" "$work/stderr")
+    [ "$notes" -eq 1 ] || fail "$notes lines name the default sun and sky, expected 1"
     cmp -s "$work/unlit-default.pfm" "$work/unlit-0.pfm" && fail "the default sun lit nothing"
-    echo "ok: the unlit file got the named default sun" ;;
+    echo "ok: the unlit file got the named default sun and sky" ;;
   texture-bomb)
     # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded): refused
     # from the headers, before anything is decoded, when they exceed the budget for decoded images.
@@ -330,6 +330,9 @@ case "$case_name" in
   cone-distance-out-of-range)
     expect_refusal "\-\-cone-max-distance must be a number from 0.01 to 2, not '5'" --cone-max-distance 5 \
       --out "$good" ;;
+  environment-negative)
+    expect_refusal "\-\-environment must be a radiance from 0 to 1e9 in each of red, green and blue" \
+      --environment 0.1,-1,0.2 --out "$good" ;;
   help-names-every-option-once)
     # The help is made from the option table: each option appears once, settings with their default.
     "$vct" render --help >"$work/stdout" 2>"$work/stderr" || fail "--help failed"

@@ -110,11 +110,11 @@ TEST(MaterialTextures, VoxelEmissionIsTheEmissionTimesTheTexturesMeanLinearColou
     EXPECT_NEAR(meanLinearColor(grey).g, 0.2158605f, 1e-6f);
 }
 
-TEST(DefaultLight, SceneWithoutLightGetsOneSunNamedInOneWarning) {
+TEST(DefaultLight, SceneWithoutLightGetsOneSunAndASkyNamedInOneWarning) {
     GltfBuilder gltf = test::quadFacingCamera();
     Scene scene = loadBuilt(gltf);
     ASSERT_TRUE(scene.lights.empty());
-    EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+    EXPECT_TRUE(addDefaultSunAndSkyIfUnlit(scene));
     ASSERT_EQ(scene.lights.size(), 1u);
     const Light& sun = scene.lights[0];
     EXPECT_EQ(sun.type, LightType::Directional);
@@ -122,18 +122,30 @@ TEST(DefaultLight, SceneWithoutLightGetsOneSunNamedInOneWarning) {
     EXPECT_NEAR(glm::length(sun.direction), 1.0f, 1e-6f);
     EXPECT_LT(sun.direction.y, 0.0f);  // from above
     EXPECT_LT(sun.direction.z, 0.0f);  // onto the side glTF models face (+Z)
+    EXPECT_EQ(scene.environment, kDefaultSkyRadiance);
     ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("default sun is added: travelling along (0.25, -0.83, -0.50), 3 lux"),
+    EXPECT_NE(scene.warnings[0].find("default sun and sky are added: the sun travelling along (0.25, -0.83, -0.50) "
+                                     "at 3 lux, the sky of radiance (0.11, 0.14, 0.18)"),
               std::string::npos)
         << scene.warnings[0];
-    EXPECT_FALSE(addDefaultSunIfUnlit(scene));  // now it has a light
+    EXPECT_FALSE(addDefaultSunAndSkyIfUnlit(scene));  // now it has a light
     EXPECT_EQ(scene.lights.size(), 1u);
+}
+
+TEST(DefaultLight, ASkyIsLightEnough) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    Scene scene = loadBuilt(gltf);
+    scene.environment = glm::vec3(0.0f, 0.0f, 0.5f);
+    EXPECT_TRUE(sceneHasLight(scene));
+    EXPECT_FALSE(addDefaultSunAndSkyIfUnlit(scene));
+    EXPECT_TRUE(scene.lights.empty());
+    EXPECT_EQ(scene.environment, glm::vec3(0.0f, 0.0f, 0.5f));
 }
 
 TEST(DefaultLight, AnEmissiveSurfaceIsLightEnough) {
     GltfBuilder gltf = emissiveQuad();
     Scene scene = loadBuilt(gltf);
-    EXPECT_FALSE(addDefaultSunIfUnlit(scene));
+    EXPECT_FALSE(addDefaultSunAndSkyIfUnlit(scene));
     EXPECT_TRUE(scene.lights.empty());
 }
 
@@ -142,7 +154,7 @@ TEST(DefaultLight, AnEmissiveFactorThroughABlackTextureIsNoLight) {
     std::vector<uint16_t> black = {0, 0, 0, 255};
     gltf.document["images"][0]["uri"] = "data:image/png;base64," + test::base64(test::encodePng(1, 1, 4, 8, black));
     Scene scene = loadBuilt(gltf);
-    EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+    EXPECT_TRUE(addDefaultSunAndSkyIfUnlit(scene));
 }
 
 size_t warningsNaming(const Scene& scene, const std::string& text) {

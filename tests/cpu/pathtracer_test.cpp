@@ -297,6 +297,31 @@ void addSunlitPlaneSeenFromAbove(Scene& scene, const Material& material, glm::ve
     scene.cameras.push_back(camera);
 }
 
+TEST(PathTracer, TheSkyIsSeenDirectlyAndLightsAnOpenPlaneIndirectly) {
+    // A grey Lambertian plane (albedo 0.5) under a uniform sky L and nothing else (the sun off),
+    // seen from above with a view twice as wide as the plane: its pixels get irradiance π·L from the
+    // whole hemisphere, so radiance 0.5·L, all of it indirect; the pixels past its edge see L, direct.
+    Scene scene;
+    addSunlitPlaneSeenFromAbove(scene, lambertian(glm::vec3(0.5f)), glm::vec3(0.0f, -1.0f, 0.0f));
+    scene.lights.clear();
+    scene.environment = glm::vec3(0.2f, 0.4f, 0.8f);
+    scene.cameras[0].yfov = 2.0f * std::atan(2.0f);  // x ∈ [−2, 2]: the plane covers the middle half
+    const PathTracer tracer = createPathTracer(scene);
+    for (Component component : {Component::Full, Component::Direct, Component::Indirect}) {
+        const RenderResult result = render(tracer, smallRender(scene, 16, 16, component, 3));
+        const bool direct = component != Component::Indirect, indirect = component != Component::Direct;
+        for (uint32_t x : {0u, 2u, 6u, 9u, 13u, 15u}) {
+            const bool onPlane = x >= 4 && x < 12;
+            const glm::vec3 expected =
+                onPlane ? (indirect ? 0.5f : 0.0f) * scene.environment : (direct ? 1.0f : 0.0f) * scene.environment;
+            const float* pixel = result.image.pixel(x, 8);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(pixel[c], expected[c], 1e-4f)
+                    << "x " << x << ", channel " << c << ", mode " << int(component);
+        }
+    }
+}
+
 TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     // A 2 × 1 texture (sRGB red 255 | green 128) on a plane with u = (x + 1)/2, lit straight down by a
     // directional light of E = π, so radiance = base colour. The camera sees u ∈ [¼, ¾], between the

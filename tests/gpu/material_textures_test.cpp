@@ -40,7 +40,7 @@ protected:
         material["extensions"] = {{"KHR_materials_specular", {{"specularFactor", 0.0}}}};
         gltf.document["extensionsUsed"] = {"KHR_materials_specular"};
         Scene scene = loadBuilt(gltf);
-        EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+        EXPECT_TRUE(addDefaultSunAndSkyIfUnlit(scene));
         Renderer renderer(gpu(), scene, directSettings());
         renderer.renderFrame();
         return renderer.readImage();

@@ -31,6 +31,9 @@ constexpr const char* kUsage =
     "  --time-limit SEC          stop after the pass that exceeds SEC, with fewer samples\n"
     "  --max-depth N             surface interactions that gather light: 1 = direct light only, 2 adds\n"
     "                            one bounce of indirect light, N adds N - 1 (default: every bounce)\n"
+    "  --environment R,G,B       radiance of a uniform sky (default black; a scene without light gets\n"
+    "                            the default sun and sky, as in vct render). The sky camera rays meet is\n"
+    "                            direct light, the sky's light on surfaces indirect\n"
     "  --camera-pos x,y,z --camera-target x,y,z --fov DEGREES\n"
     "                            override the scene's first camera (+Y up, vertical field of view)\n"
     "Writes FILE.pfm (linear radiance; .png also works) and FILE.json (spp, seconds, noise).\n";
@@ -42,6 +45,7 @@ struct Options {
     std::optional<glm::vec3> cameraPosition, cameraTarget;
     std::optional<float> fovDegrees;
     std::optional<uint32_t> maxDepth;
+    std::optional<glm::vec3> environment;
 };
 
 template <typename T>
@@ -90,6 +94,7 @@ Options parseOptions(int argc, char** argv) {
         else if (option == "--camera-pos") options.cameraPosition = parseVector(option, value);
         else if (option == "--camera-target") options.cameraTarget = parseVector(option, value);
         else if (option == "--fov") options.fovDegrees = parseNumber<float>(option, value);
+        else if (option == "--environment") options.environment = parseVector(option, value);
         else if (option == "--mode") {
             if (value == "full") s.component = pt::Component::Full;
             else if (value == "direct") s.component = pt::Component::Direct;
@@ -105,6 +110,9 @@ Options parseOptions(int argc, char** argv) {
         throw Error("the image size must be between 1 and 16384 pixels on each side");
     }
     if (s.samplesPerPixel == 0) throw Error("--spp must be at least 1");
+    if (options.environment && !(glm::all(glm::greaterThanEqual(*options.environment, glm::vec3(0.0f))) &&
+                                 glm::all(glm::lessThanEqual(*options.environment, glm::vec3(1e9f)))))
+        throw Error("--environment must be a radiance from 0 to 1e9 in each of red, green and blue");
     if (options.fovDegrees && !(*options.fovDegrees > 0.0f && *options.fovDegrees < 180.0f)) {
         throw Error("--fov must be between 0 and 180 degrees");
     }
@@ -149,7 +157,8 @@ const char* modeName(pt::Component component) {
 int run(int argc, char** argv) {
     Options options = parseOptions(argc, argv);
     vct::Scene scene = vct::loadScene(options.scene);
-    vct::addDefaultSunIfUnlit(scene);  // the light `vct render` gives a scene without any
+    if (options.environment) scene.environment = *options.environment;
+    vct::addDefaultSunAndSkyIfUnlit(scene);  // the light `vct render` gives a scene without any
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     options.settings.camera = chooseCamera(scene, options);
     pt::PathTracer tracer = pt::createPathTracer(scene);

@@ -326,7 +326,13 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
     // the last gathering vertex received (its other half is that vertex's light sampling).
     for (uint32_t depth = 1; depth <= tracer.maxDepth + 1; ++depth) {
         const std::optional<RayHit> hit = closestHit(tracer.bvh, ray);
-        if (!hit) break;
+        if (!hit) {
+            // The sky: seen by the camera it is direct light, as an emitter seen is; on a surface
+            // it is indirect light, which is where the renderer's cones gather it. Uniform, so
+            // BRDF sampling alone finds it without much noise.
+            if (depth == 1 ? wantDirect : wantIndirect) radiance += throughput * tracer.scene->environment;
+            break;
+        }
         const SurfacePoint s = surfaceAt(tracer, *hit, ray.direction);
         const bool gathers = depth <= tracer.maxDepth;
 
