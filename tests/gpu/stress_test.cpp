@@ -28,8 +28,10 @@ struct Tolerances {
     // Mean inside a closed block / usual view's (truth 0). Measured 0.23 with one bounce and
     // two-sided voxels; 0.41 since voxels are one-sided (transparent from behind, which removes
     // self-illumination) and the light converges: from inside, the block's faces are seen from
-    // behind. Two-layer thin walls would bring it back to ~0.
-    double insideGeometry = 0.45;
+    // behind; 0.48 since cone steps are at most two texels of the level sampled (the stripes fix):
+    // the longer steps had jumped over part of the block's faces, which the cones from inside now
+    // meet whole, lit side and all. Two-layer thin walls would bring it back to ~0.
+    double insideGeometry = 0.52;
 };
 constexpr Tolerances kTolerances;
 
