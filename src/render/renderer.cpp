@@ -80,9 +80,7 @@ void Renderer::setGeometry(const Scene& scene) {
     areaLights_ = findAreaLights(local);
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     environment_ = scene.environment;
-    // The sky stands beside the brightest emitter in the voxels' storage scale: light it bounces
-    // into a scene lit by nothing else must fit in float16 as well.
-    brightestEmission_ = std::max({environment_.r, environment_.g, environment_.b});
+    brightestEmission_ = 0.0f;
     anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
         return material.metallic > 0.0f || material.specularWeight > 0.0f;
     });
@@ -145,11 +143,18 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     // The brightest emitter stands in for the scene's materials in the storage scale.
     Scene emitters;
     Material brightest;
-    brightest.emission = glm::vec3(brightestEmission_);
+    // The sky stands beside the brightest emitter: light it bounces into a scene lit by nothing
+    // else must fit in float16 as well.
+    brightest.emission = glm::vec3(std::max({brightestEmission_, environment_.r, environment_.g, environment_.b}));
     emitters.materials.push_back(brightest);
     radianceScale_ = radianceStorageScale(lights_, emitters, grid_.originVoxelSize.w);
     stale_.shadows = true;
     stale_.radiance = true;
+}
+
+void Renderer::setEnvironment(glm::vec3 environment) {
+    environment_ = environment;
+    setLights(lights_);  // the storage scale may change with it, and the light converges again
 }
 
 void Renderer::setShading(const ShadingSettings& shading) { settings_.shading = shading; }

@@ -55,6 +55,9 @@ public:
     // and shadow maps are rebuilt on the next frame. Lights and camera stay as they are.
     void setGeometry(const Scene& scene);
     const std::vector<Light>& lights() const { return lights_; }
+    // The sky's radiance (Scene::environment); a change converges the light again, as setLights.
+    void setEnvironment(glm::vec3 environment);
+    glm::vec3 environment() const { return environment_; }
     const RenderSettings& settings() const { return settings_; }
     // Changes that need no new images or voxels (a new image size is resize(); new resources
     // need a new Renderer).

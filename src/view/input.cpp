@@ -70,8 +70,8 @@ int keyFromName(const std::string& rawName) {
 
 static size_t argumentCount(const std::string& action) {
     static const std::map<std::string, size_t> counts = {
-        {"key", 2},     {"mouse", 2},      {"button", 2}, {"scroll", 1}, {"resize", 2}, {"iconify", 0},
-        {"restore", 0}, {"screenshot", 1}, {"drop", 1},   {"quit", 0},   {"light", 3},  {"type", 1}};
+        {"key", 2},        {"mouse", 2}, {"button", 2}, {"scroll", 1}, {"resize", 2}, {"iconify", 0}, {"restore", 0},
+        {"screenshot", 1}, {"drop", 1},  {"quit", 0},   {"light", 3},  {"type", 1},   {"sky", 3}};
     const auto found = counts.find(action);
     return found == counts.end() ? size_t(-1) : found->second;
 }

@@ -13,6 +13,7 @@
 //   drop FILE                  as if FILE were dropped on the window
 //   type TEXT                  TEXT as typed characters, into the text field that has the focus
 //   light INDEX intensity X    what the scene panel's intensity field does to the scene's light INDEX
+//   sky R G B                  what the scene panel's sky radiance field does
 //                              (counted from 0, as the panel lists them; cd, or lux for the sun)
 //   quit
 // FRAME counts loop iterations from 0, including iterations where a minimised window draws nothing.

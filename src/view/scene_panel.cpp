@@ -79,6 +79,12 @@ void drawLightsSection(ViewerState& state) {
         }
         ImGui::PopID();
     }
+    if (ImGui::TreeNodeEx("sky", state.environment != glm::vec3(0.0f) ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+        // Radiance, not a display colour: HDR values, dragged in small steps.
+        ImGui::ColorEdit3("radiance", &state.environment.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+        state.environment = glm::max(state.environment, glm::vec3(0.0f));
+        ImGui::TreePop();
+    }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("Emissive surfaces light the scene too: see Materials.");
     ImGui::PopStyleColor();

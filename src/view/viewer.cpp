@@ -321,6 +321,7 @@ void Viewer::rememberSceneFile(const std::string& name) {
 // The panels and the camera start from the scene the renderer was just built for.
 void Viewer::showScene() {
     state_.lights = scene_.lights;
+    state_.environment = scene_.environment;
     state_.materials = scene_.materials;
     state_.sceneSize = std::max(glm::length(scene_.bounds().extent()), 1e-3f);
     const Light& sun = scene_.lights.at(state_.sunIndex);
@@ -376,6 +377,12 @@ void Viewer::applyScript() {
                             " (it has " + std::to_string(state_.lights.size()) + ", counted from 0)");
             if (size_t(index) == state_.sunIndex) state_.sun.intensity = intensity;
             else state_.lights[size_t(index)].intensity = intensity;
+        } else if (event.action == "sky") {
+            // What the scene panel's sky radiance field writes.
+            const glm::vec3 sky(parseNumber(event, 0), parseNumber(event, 1), parseNumber(event, 2));
+            if (!glm::all(glm::greaterThanEqual(sky, glm::vec3(0.0f))))
+                throw Error("script, frame " + std::to_string(event.frame) + ": a sky's radiance is not negative");
+            state_.environment = sky;
         } else if (event.action == "quit") {
             quit_ = true;
         }
@@ -516,6 +523,10 @@ void Viewer::applyLightEdits() {
         sunLight.direction = sun.travelDirection();
         sunLight.intensity = sun.intensity;
         shownSun_ = sun;
+    }
+    if (state_.environment != renderer_->environment()) {
+        renderer_->setEnvironment(state_.environment);
+        imageStale_ = true;
     }
     if (sameLights(state_.lights, renderer_->lights())) return;
     try {

@@ -40,6 +40,7 @@ struct ViewerState {
     // when they differ from its own. The sun's direction and intensity come from `sun`.
     std::vector<Light> lights;
     size_t sunIndex = 0;
+    glm::vec3 environment{0.0f};      // the sky's radiance, as the scene panel edits it
     std::vector<Material> materials;  // shown, not edited
     float sceneSize = 1.0f;           // the bounds' diagonal, for drag speeds
     bool showGuide = false;           // F1 opens it; the status bar says so

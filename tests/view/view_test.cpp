@@ -387,6 +387,26 @@ TEST_F(View, ALightEntryInAScriptSetsItsIntensity) {
     EXPECT_LT(meanValue(screenshot("no_sun.png")), bright - 2.0) << log;
 }
 
+TEST_F(View, ASkyEntryInAScriptLightsTheSkyAndTheGround) {
+    // The terrain under a black sky, then a blue one (what the scene panel's sky field writes): the
+    // sky above the hills turns blue, and the ground, lit by it through the cones, brighter.
+    const std::string events =
+        std::string(hidePanels) + "1 screenshot black.png; 2 sky 0.2 0.4 0.8; 4 screenshot blue.png; 5 quit";
+    ASSERT_EQ(runViewer("--scene terrain --events '" + events + "'"), 0) << log;
+    const Png black = screenshot("black.png"), blue = screenshot("blue.png");
+    const Png skyBefore = crop(black, 0, 0, 320, 12), skyAfter = crop(blue, 0, 0, 320, 12);
+    ASSERT_FALSE(skyAfter.rgb.empty()) << log;
+    EXPECT_LT(meanValue(skyBefore), 2.0) << log;
+    double red = 0.0, blueChannel = 0.0;
+    for (size_t i = 0; i < skyAfter.rgb.size(); i += 3) {
+        red += skyAfter.rgb[i];
+        blueChannel += skyAfter.rgb[i + 2];
+    }
+    EXPECT_GT(blueChannel, 1.5 * red) << log;
+    EXPECT_GT(meanValue(skyAfter), 40.0) << log;
+    EXPECT_GT(meanValue(crop(blue, 0, 120, 320, 180)), meanValue(crop(black, 0, 120, 320, 180)) + 5.0) << log;
+}
+
 TEST_F(View, ALightTheRendererRefusesIsKeptAsItWasAndSaidSo) {
     // A negative intensity, or one past what the voxels' float16 holds: the window shows why, the
     // light stays as it was (the same image), and the viewer goes on.
