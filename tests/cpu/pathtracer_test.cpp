@@ -10,10 +10,13 @@
 #include "bvh.h"
 #include "lights.h"
 #include "path_tracer.h"
+#include "pathtracer_test_helpers.h"
 #include "sampling.h"
 
 namespace vct::pt {
 namespace {
+
+using namespace test;
 
 // Tolerances, in one place.
 constexpr double kFurnaceMeanTolerance = 0.01;    // relative, image mean
@@ -22,21 +25,6 @@ constexpr double kAnalyticPixelTolerance = 0.01;  // relative, point light over 
 constexpr double kSigmas = 4.5;                   // agreement of independent estimates, in standard errors
 constexpr double kPdfIntegralTolerance = 0.005;   // absolute
 constexpr double kSamplerTolerance = 0.03;
-
-Material lambertian(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
-    Material material;
-    material.baseColorFactor = glm::vec4(albedo, 1.0f);
-    material.metallic = 0.0f;
-    material.roughness = 1.0f;
-    material.specularWeight = 0.0f;
-    material.emission = emission;
-    return material;
-}
-
-uint32_t addMaterial(Scene& scene, const Material& material) {
-    scene.materials.push_back(material);
-    return uint32_t(scene.materials.size() - 1);
-}
 
 void addTriangle(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material) {
     const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
@@ -126,17 +114,6 @@ Scene makeTestRoom() {
     scene.lights.push_back(light);
     scene.cameras.push_back(cameraLookingAt(glm::vec3(0.0f, 0.0f, 0.95f), glm::vec3(0.0f, -0.2f, 0.0f), 1.4f));
     return scene;
-}
-
-RenderSettings smallRender(const Scene& scene, uint32_t size, uint32_t spp, Component component, uint64_t seed) {
-    RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.samplesPerPixel = spp;
-    settings.component = component;
-    settings.seed = seed;
-    settings.threads = 2;
-    settings.camera = scene.cameras.at(0);
-    return settings;
 }
 
 bool allFinite(const Image& image) {
@@ -275,28 +252,6 @@ TEST(PathTracer, PunctualLightsOverLambertianPlaneFollowTheirFalloff) {
     }
 }
 
-// `scene` (its textures set) plus a 2 × 2 plane facing up with `material`, u = (x + 1)/2 and
-// v = (z + 1)/2, lit by a sun of E = π travelling along `sunTravel`, and a camera above looking
-// down that sees x, z ∈ [−½, ½] with image right = +x (so up the image is −z).
-void addSunlitPlaneSeenFromAbove(Scene& scene, const Material& material, glm::vec3 sunTravel) {
-    const uint32_t plane = addMaterial(scene, material);
-    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
-        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
-    scene.indices = {0, 2, 1, 0, 3, 2};
-    scene.triangleMaterials = {plane, plane};
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(sunTravel);
-    sun.intensity = kPi;
-    scene.lights.push_back(sun);
-    Camera camera;
-    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
-    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
-    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
-    scene.cameras.push_back(camera);
-}
-
 TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     // A 2 × 1 texture (sRGB red 255 | green 128) on a plane with u = (x + 1)/2, lit straight down by a
     // directional light of E = π, so radiance = base colour. The camera sees u ∈ [¼, ¾], between the
@@ -387,18 +342,6 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
         for (uint32_t x = 10; x < 16; ++x)
             EXPECT_NEAR(result.image.pixel(x, y)[0], upImage, 0.01f * upImage) << x << "," << y;
     }
-}
-
-// A texture `width` × 1, black on its left half and white on its right (sRGB 0 and 255).
-Texture halfBlackTexture(uint32_t width) {
-    Texture texture;
-    texture.width = width;
-    texture.height = 1;
-    for (uint32_t x = 0; x < width; ++x) {
-        const uint8_t value = x < width / 2 ? 0 : 255;
-        texture.rgba8.insert(texture.rgba8.end(), {value, value, value, 255});
-    }
-    return texture;
 }
 
 // A quad with u from 0 to 1 along `right` and v from 0 to 1 along `down`, facing down × right: the
