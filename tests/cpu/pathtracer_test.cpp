@@ -263,7 +263,7 @@ TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     texture.rgba8 = {255, 0, 0, 255, 0, 128, 0, 255};
     scene.textures.push_back(texture);
     Material material = lambertian(glm::vec3(1.0f, 0.5f, 1.0f));
-    material.baseColorTexture = 0;
+    material.baseColorTexture.index = 0;
     addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.0f, -1.0f, 0.0f));
     const PathTracer tracer = createPathTracer(scene);
     const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 2));
@@ -292,7 +292,7 @@ TEST(PathTracer, MetallicRoughnessTextureIsLinearAndScalesTheFactors) {
         Material material = lambertian(glm::vec3(1.0f));
         material.metallic = metallic;
         material.roughness = 1.0f;
-        material.metallicRoughnessTexture = textured ? 0 : -1;
+        material.metallicRoughnessTexture.index = textured ? 0 : -1;
         addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.0f, -1.0f, 0.0f));
         return render(createPathTracer(scene), smallRender(scene, 8, 64, Component::Full, 2)).image;
     };
@@ -321,7 +321,7 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
         texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
     scene.textures.push_back(texture);
     Material material = lambertian(glm::vec3(1.0f));
-    material.normalTexture = 0;
+    material.normalTexture.index = 0;
     addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
     const glm::vec3 toSun = -scene.lights.back().direction;
     const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
@@ -359,7 +359,7 @@ void addTexturedQuad(Scene& scene, glm::vec3 corner, glm::vec3 right, glm::vec3 
 
 Material texturedEmitter(glm::vec3 emission) {
     Material material = lambertian(glm::vec3(0.0f), emission);
-    material.emissiveTexture = 0;
+    material.emissiveTexture.index = 0;
     return material;
 }
 
