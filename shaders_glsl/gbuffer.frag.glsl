@@ -1,11 +1,13 @@
 #version 460
-// G-buffer: world position + material index, shading normal + front-face flag, base colour +
-// metallic, and the emissive texture's colour (the shading pass multiplies it with the material's
-// emission) + roughness. Four targets, the most Vulkan guarantees (maxColorAttachments ≥ 4): metallic
-// and roughness ride in the alpha channels of the two colour targets.
+// G-buffer: world position + material index, shading normal + front-face flag and occlusion, base
+// colour + metallic, and the emissive texture's colour (the shading pass multiplies it with the
+// material's emission) + roughness. Four targets, the most Vulkan guarantees (maxColorAttachments ≥ 4):
+// metallic and roughness ride in the alpha channels of the two colour targets, the front-face flag
+// and the occlusion texture's value share the normal's (gbufferSideOcclusion).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 #include "normal_map.h"
+#include "gbuffer_packing.h"
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
@@ -21,7 +23,7 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 2) in vec4 texCoords;  // xy TEXCOORD_0, zw TEXCOORD_1
 
 layout(location = 0) out vec4 outPosition;   // xyz, w = material index + 1 (0 = nothing)
-layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = 1 on the front face
+layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = gbufferSideOcclusion
 layout(location = 2) out vec4 outBaseColor;  // linear rgb, metallic
 layout(location = 3) out vec4 outEmissive;   // linear rgb of the emissive texture (1 without one), roughness
 
@@ -41,6 +43,13 @@ void main() {
         metallicRoughness *=
             texture(colorTextures[material.metallicRoughnessTexture], uvOf(material.metallicRoughnessTransform)).bg;
     metallicRoughness = clamp(metallicRoughness, 0.0f, 1.0f);
+    // glTF 2.0 §3.9.3: the occlusion texture's red channel, blended towards 1 by 1 − strength,
+    // scales the indirect light only.
+    float occlusion = 1.0f;
+    if (material.occlusionTexture >= 0) {
+        float red = texture(colorTextures[material.occlusionTexture], uvOf(material.occlusionTransform)).r;
+        occlusion = clamp(1.0f + material.occlusionStrength * (red - 1.0f), 0.0f, 1.0f);
+    }
 
     // Surfaces reflect on both sides (as in the reference path tracer); emission leaves the front only.
     vec3 normal = worldNormal;
@@ -73,7 +82,7 @@ void main() {
     if (!frontFace) normal = -normal;
 
     outPosition = vec4(worldPosition, float(materialIndex + 1u));
-    outNormal = vec4(normal, frontFace ? 1.0f : 0.0f);
+    outNormal = vec4(normal, gbufferSideOcclusion(frontFace, occlusion));
     outBaseColor = vec4(baseColor.rgb, metallicRoughness.x);
     outEmissive = vec4(emissive, metallicRoughness.y);
 }

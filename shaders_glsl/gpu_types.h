@@ -27,11 +27,16 @@ struct GpuMaterial {
     int metallicRoughnessTexture;  // -1 = none; linear, blue scales metallic, green roughness (glTF)
     int normalTexture;             // -1 = none; linear, tangent space (glTF)
     float normalScale;             // scales the normal texture's x and y
+    int occlusionTexture;          // -1 = none; linear, red scales the indirect light (glTF)
+    float occlusionStrength;       // occlusion = 1 + strength · (red − 1)
+    uint unused0;
+    uint unused1;
     // Where each texture is read (texture_transform.h).
     GpuTextureTransform baseColorTransform;
     GpuTextureTransform emissiveTransform;
     GpuTextureTransform metallicRoughnessTransform;
     GpuTextureTransform normalTransform;
+    GpuTextureTransform occlusionTransform;
 };
 
 struct GpuLight {

@@ -58,8 +58,9 @@ bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && st
 
 // Every texture transform's numbers are finite.
 bool finiteMapping(const Material& material) {
-    for (const TextureReference* texture : {&material.baseColorTexture, &material.emissiveTexture,
-                                            &material.metallicRoughnessTexture, &material.normalTexture})
+    for (const TextureReference* texture :
+         {&material.baseColorTexture, &material.emissiveTexture, &material.metallicRoughnessTexture,
+          &material.normalTexture, &material.occlusionTexture})
         if (!finite(glm::vec3(texture->offset, texture->rotation)) || !std::isfinite(texture->scale.x) ||
             !std::isfinite(texture->scale.y))
             return false;
@@ -93,7 +94,8 @@ void checkSceneCanBeRendered(const Scene& scene) {
         const glm::vec4 color = material.baseColorFactor;
         if (!finite(glm::vec3(color)) || !std::isfinite(color.a) || !finite(material.emission) ||
             !std::isfinite(material.metallic) || !std::isfinite(material.roughness) ||
-            !std::isfinite(material.specularWeight) || !std::isfinite(material.normalScale) || !finiteMapping(material))
+            !std::isfinite(material.specularWeight) || !std::isfinite(material.normalScale) ||
+            !std::isfinite(material.occlusionStrength) || !finiteMapping(material))
             fail("material " + std::to_string(i) + " ('" + material.name +
                  "') holds a value that is not a finite number");
     }
@@ -160,10 +162,13 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         gpu.metallicRoughnessTexture = material.metallicRoughnessTexture.index;
         gpu.normalTexture = material.normalTexture.index;
         gpu.normalScale = material.normalScale;
+        gpu.occlusionTexture = material.occlusionTexture.index;
+        gpu.occlusionStrength = material.occlusionStrength;
         gpu.baseColorTransform = textureTransform(material.baseColorTexture);
         gpu.emissiveTransform = textureTransform(material.emissiveTexture);
         gpu.metallicRoughnessTransform = textureTransform(material.metallicRoughnessTexture);
         gpu.normalTransform = textureTransform(material.normalTexture);
+        gpu.occlusionTransform = textureTransform(material.occlusionTexture);
         gpuMaterials.push_back(gpu);
     }
     materials = uploadArray(context, gpuMaterials, storage);

@@ -237,8 +237,8 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     vet("buffers", true);
     vet("images", false);
 
-    // Only the images of the material textures (base colour, emissive, metallic-roughness, normal)
-    // are decoded; the others are not used.
+    // Only the images of the material textures (base colour, emissive, metallic-roughness, normal,
+    // occlusion) are decoded; the others are not used.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
     if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
@@ -254,6 +254,7 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
         decode(member(member(&material, "pbrMetallicRoughness"), "metallicRoughnessTexture"));
         decode(member(&material, "normalTexture"));
         decode(member(&material, "emissiveTexture"));
+        decode(member(&material, "occlusionTexture"));
     }
 }
 
@@ -497,6 +498,9 @@ struct Converter {
             material.normalTexture = textureReference(i, path + ".normalTexture", source.normalTexture, false,
                                                       "interpolated vertex normals");
             material.normalScale = float(source.normalTexture.scale);
+            material.occlusionTexture = textureReference(i, path + ".occlusionTexture", source.occlusionTexture, false,
+                                                         "unoccluded indirect light");
+            material.occlusionStrength = float(source.occlusionTexture.strength);
             material.specularWeight =
                 float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
             const double strength =
@@ -514,6 +518,7 @@ struct Converter {
         for (const auto& [reference, name] : {std::pair{&material.baseColorTexture, "baseColorTexture"},
                                               {&material.metallicRoughnessTexture, "metallicRoughnessTexture"},
                                               {&material.normalTexture, "normalTexture"},
+                                              {&material.occlusionTexture, "occlusionTexture"},
                                               {&material.emissiveTexture, "emissiveTexture"}})
             if (reference->index >= 0 && reference->texCoord == 1)
                 names += (names.empty() ? "" : ", ") + std::string(name);

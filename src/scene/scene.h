@@ -50,6 +50,11 @@ struct Material {
     // texture's own, after its transform), its x and y scaled by `normalScale`.
     TextureReference normalTexture;
     float normalScale = 1.0f;
+    // Linear: red is how much of the indirect light reaches the surface, 1 + occlusionStrength ·
+    // (red − 1) (glTF 2.0 §3.9.3). The renderer applies it; the path tracer, which finds occlusion
+    // itself, does not.
+    TextureReference occlusionTexture;
+    float occlusionStrength = 1.0f;
     // KHR_materials_specular specularFactor: 1 = glTF default dielectric (F0 = 0.04),
     // 0 = pure Lambertian (used by the Cornell box, whose reflectances are diffuse).
     float specularWeight = 1.0f;

@@ -1,5 +1,5 @@
-// Where material textures are read: the texture-coordinate set each textureInfo names, and
-// KHR_texture_transform, from the file to the Scene.
+// Where material textures are read: the occlusion texture, the texture-coordinate set each
+// textureInfo names, and KHR_texture_transform, from the file to the Scene.
 #include <gtest/gtest.h>
 
 #include "gltf_test_helpers.h"
@@ -43,6 +43,24 @@ void addMirroredTexCoord1(GltfBuilder& gltf) {
         gltf.addVec2({{1, 1}, {0, 1}, {0, 0}, {1, 0}});
 }
 
+TEST(OcclusionTexture, IsDecodedAsLinearDataWithItsStrength) {
+    GltfBuilder gltf = texturedQuad();
+    gltf.document["materials"][0] = {{"occlusionTexture", {{"index", 0}, {"strength", 0.75}}}};
+    const Scene scene = loadBuilt(gltf);
+    const Material& material = scene.materials[0];
+    ASSERT_GE(material.occlusionTexture.index, 0);
+    EXPECT_FALSE(scene.textures[size_t(material.occlusionTexture.index)].srgb);
+    EXPECT_EQ(material.occlusionStrength, 0.75f);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
+TEST(OcclusionTexture, AStrengthOutsideZeroToOneIsRefused) {
+    GltfBuilder gltf = texturedQuad();
+    gltf.document["materials"][0] = {{"occlusionTexture", {{"index", 0}, {"strength", 1.5}}}};
+    EXPECT_NE(loadError(gltf).find("materials[0].occlusionTexture.strength: 1.5 is outside [0, 1]"), std::string::npos)
+        << loadError(gltf);
+}
+
 TEST(TexCoord, EachTextureReadsTheSetItsTextureInfoNames) {
     GltfBuilder gltf = texturedQuad();
     addMirroredTexCoord1(gltf);
@@ -64,11 +82,11 @@ TEST(TexCoord, EachTextureReadsTheSetItsTextureInfoNames) {
 TEST(TexCoord, APrimitiveWithoutTexCoord1ReadsTexCoord0InsteadWithOneWarning) {
     GltfBuilder gltf = texturedQuad();
     gltf.document["materials"][0] = {{"normalTexture", {{"index", 0}, {"texCoord", 1}}},
-                                     {"emissiveTexture", {{"index", 0}, {"texCoord", 1}}}};
+                                     {"occlusionTexture", {{"index", 0}, {"texCoord", 1}}}};
     const Scene scene = loadBuilt(gltf);
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_NE(scene.warnings[0].find("meshes[0].primitives[0].attributes: has no TEXCOORD_1, which materials[0]'s "
-                                     "normalTexture, emissiveTexture reads; TEXCOORD_0 stands in"),
+                                     "normalTexture, occlusionTexture reads; TEXCOORD_0 stands in"),
               std::string::npos)
         << scene.warnings[0];
     for (const Vertex& vertex : scene.vertices) EXPECT_EQ(vertex.uv1, glm::vec2(vertex.u, vertex.v));

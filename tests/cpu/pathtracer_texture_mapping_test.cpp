@@ -1,5 +1,5 @@
 // Where the path tracer reads material textures: the texture-coordinate set each names, through its
-// KHR_texture_transform, as the renderer does.
+// KHR_texture_transform, as the renderer does; and the occlusion texture, which it ignores.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +7,7 @@
 
 #include "path_tracer.h"
 #include "pathtracer_test_helpers.h"
+#include "scene/load.h"
 
 namespace vct::pt {
 namespace {
@@ -97,6 +98,31 @@ TEST(PathTracerTextureMapping, ATransformedTextureIsReadWhereTheExtensionsFormul
             ++checked;
         }
     EXPECT_GT(checked, kSize * kSize / 5);
+}
+
+TEST(PathTracerTextureMapping, TheOcclusionTextureIsIgnoredBecausePathsFindOcclusionThemselves) {
+    // The Cornell box's indirect light, with and without a black occlusion texture of full strength
+    // on every material: the renderer would darken all of it; the path tracer, whose paths meet the
+    // occluders the texture stands for, must not count them twice. Same seed, same paths.
+    const Scene plain = loadScene("cornell");
+    Scene occluded = plain;
+    Texture black;
+    black.width = black.height = 1;
+    black.rgba8 = {0, 0, 0, 255};
+    black.srgb = false;
+    occluded.textures.push_back(black);
+    for (Material& material : occluded.materials) {
+        material.occlusionTexture.index = int(occluded.textures.size() - 1);
+        material.occlusionStrength = 1.0f;
+    }
+    const Image expected = render(createPathTracer(plain), smallRender(plain, 8, 8, Component::Indirect, 5)).image;
+    const Image image = render(createPathTracer(occluded), smallRender(occluded, 8, 8, Component::Indirect, 5)).image;
+    double sum = 0.0;
+    for (size_t i = 0; i < expected.rgb.size(); ++i) {
+        EXPECT_EQ(image.rgb[i], expected.rgb[i]) << "value " << i;
+        sum += expected.rgb[i];
+    }
+    EXPECT_GT(sum, 0.0) << "the box has indirect light for a texture to darken";
 }
 
 }  // namespace

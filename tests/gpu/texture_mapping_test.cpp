@@ -1,5 +1,5 @@
 // Where the camera sees material textures read: the texture-coordinate set each textureInfo names,
-// through KHR_texture_transform.
+// through KHR_texture_transform; and the occlusion texture, which scales indirect light only.
 #include <cmath>
 
 #include "../cpu/gltf_test_helpers.h"
@@ -126,6 +126,68 @@ TEST_F(TextureMapping, ATransformedTextureIsReadWhereTheExtensionsFormulaSays) {
             ++checked;
         }
     EXPECT_GT(checked, kSize * kSize / 5);
+}
+
+// The quad (base colour 0.8, a glossy dielectric, so that both indirect lobes carry light), with the
+// 8-texel occlusion texture whose red is 128 on its left half and 255 on its right when `occluded`,
+// and a 4 × 4 black panel glowing towards it from behind the camera. Area lights are off, so the panel
+// lights the quad through the voxels and cones alone: all its light on the quad is indirect. A sun
+// adds direct light.
+Scene occlusionScene(bool occluded) {
+    GltfBuilder gltf = quadFacingCamera();
+    const int positions = gltf.addVec3({{-2, -2, 3}, {2, -2, 3}, {2, 2, 3}, {-2, 2, 3}});
+    const int normals = gltf.addVec3({{0, 0, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}});
+    const int panel = gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}}, gltf.addIndices({0, 2, 1, 0, 3, 2}),
+                                   /*material=*/1);
+    gltf.document["scenes"][0]["nodes"].push_back(gltf.addNode({{"mesh", panel}}));
+    gltf.document["materials"][0] = {
+        {"pbrMetallicRoughness",
+         {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.4}}}};
+    gltf.document["materials"].push_back(
+        {{"emissiveFactor", {1.0, 1.0, 1.0}}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.0, 0.0, 0.0, 1.0}}}}});
+    if (occluded) {
+        std::vector<uint16_t> texels;
+        for (uint32_t x = 0; x < 8; ++x) texels.insert(texels.end(), {uint16_t(x < 4 ? 128 : 255), 0, 0, 255});
+        gltf.document["images"] = json::array({{{"uri", pngUri(8, 1, texels)}}});
+        gltf.document["textures"] = json::array({{{"source", 0}}});
+        gltf.document["materials"][0]["occlusionTexture"] = {{"index", 0}, {"strength", 0.75}};
+    }
+    Scene scene = loadBuilt(gltf);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = kDefaultSunTravel;
+    sun.intensity = kDefaultSunIlluminance;
+    scene.lights.push_back(sun);
+    return scene;
+}
+
+TEST_F(TextureMapping, TheOcclusionTextureScalesIndirectLightAndLeavesDirectLightAlone) {
+    // glTF: occlusion = 1 + strength·(red − 1), read linearly: 1 + 0.75·(128/255 − 1) = 0.626 on the
+    // left half (0.41 if it were read as sRGB, 0.50 without the strength), 1 on the right.
+    const float leftOcclusion = 1.0f + 0.75f * (128.0f / 255.0f - 1.0f);
+    auto render = [&](bool occluded, RenderMode mode) {
+        const Scene scene = occlusionScene(occluded);
+        RenderSettings settings = smallSettings(mode);
+        settings.shading.components.areaLights = false;
+        Renderer renderer(gpu(), scene, settings);
+        renderer.renderFrame();
+        return renderer.readImage();
+    };
+    const Image indirect = render(true, RenderMode::Indirect), indirectOpen = render(false, RenderMode::Indirect);
+    const Image direct = render(true, RenderMode::Direct), directOpen = render(false, RenderMode::Direct);
+    // Columns 0-10 see the left half's texels only, 21-31 the right half's (as in MaterialTextures).
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            if (x > 10 && x < 21) continue;
+            const float expected = x <= 10 ? leftOcclusion : 1.0f;
+            const float open = indirectOpen.pixel(x, y)[0];
+            ASSERT_GT(open, 1e-3f) << x << "," << y << ": the panel's light reaches the quad";
+            EXPECT_NEAR(indirect.pixel(x, y)[0] / open, expected, kRelativeTolerance) << x << "," << y;
+            const float lit = directOpen.pixel(x, y)[0];
+            ASSERT_GT(lit, 1e-3f) << x << "," << y << ": the sun lights the quad";
+            EXPECT_NEAR(direct.pixel(x, y)[0], lit, 1e-4f * lit) << x << "," << y;
+        }
+    }
 }
 
 }  // namespace

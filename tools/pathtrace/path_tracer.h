@@ -10,7 +10,8 @@
 // - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Alpha is
 //   ignored (all surfaces are opaque). There is no environment light.
 // - Each texture is read at the texture-coordinate set its material names, through its
-//   KHR_texture_transform (shaders_glsl/texture_transform.h, as on the GPU).
+//   KHR_texture_transform (shaders_glsl/texture_transform.h, as on the GPU). The occlusion texture
+//   is ignored: paths find the occlusion it stands for themselves.
 // - Punctual lights (KHR_lights_punctual, no photometric factor) are delta lights, reached only
 //   by next-event estimation. Emissive triangles are sampled by area, chosen with probability
 //   ∝ area × luminance(emission), and combined with BRDF sampling by the power heuristic.
