@@ -462,11 +462,13 @@ struct Converter {
                 texCoordPath = path + ".extensions.KHR_texture_transform.texCoord";
             }
         }
-        if (texCoord == 0 || texCoord == 1) reference.texCoord = uint32_t(texCoord);
-        else
+        if (texCoord != 0 && texCoord != 1) {
             warn(texCoordPath, "TEXCOORD_" + std::to_string(texCoord) +
                                    " is not read (only TEXCOORD_0 and TEXCOORD_1 are); the texture is sampled with "
                                    "TEXCOORD_0");
+            texCoord = 0;
+        }
+        reference.texCoord = uint32_t(texCoord);
         return reference;
     }
 

@@ -22,8 +22,8 @@ struct Vertex {
     float u = 0.0f;  // TEXCOORD_0
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     float v = 0.0f;
-    glm::vec2 uv1{0.0f};  // TEXCOORD_1; a file without one gets TEXCOORD_0 here
-    glm::vec2 unused{0.0f};
+    glm::vec2 uv1{0.0f};     // TEXCOORD_1; a file without one gets TEXCOORD_0 here
+    glm::vec2 unused{0.0f};  // fills the third vec4
 };
 
 // A material's use of a texture, as a glTF textureInfo says it: which texture, read at which
