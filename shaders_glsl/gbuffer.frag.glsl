@@ -1,11 +1,13 @@
 #version 460
-// G-buffer: world position + material index, shading normal + front-face flag, base colour +
-// metallic, and the emissive texture's colour (the shading pass multiplies it with the material's
-// emission) + roughness. Four targets, the most Vulkan guarantees (maxColorAttachments ≥ 4): metallic
-// and roughness ride in the alpha channels of the two colour targets.
+// G-buffer: world position + material index, shading normal + front-face flag and occlusion, base
+// colour + metallic, and the emissive texture's colour (the shading pass multiplies it with the
+// material's emission) + roughness. Four targets, the most Vulkan guarantees (maxColorAttachments ≥ 4):
+// metallic and roughness ride in the alpha channels of the two colour targets, the front-face flag
+// and the occlusion texture's value share the normal's (gbufferSideOcclusion).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 #include "normal_map.h"
+#include "gbuffer_packing.h"
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
@@ -18,24 +20,36 @@ layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
-layout(location = 2) in vec2 uv;
+layout(location = 2) in vec4 texCoords;  // xy TEXCOORD_0, zw TEXCOORD_1
 
 layout(location = 0) out vec4 outPosition;   // xyz, w = material index + 1 (0 = nothing)
-layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = 1 on the front face
+layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = gbufferSideOcclusion
 layout(location = 2) out vec4 outBaseColor;  // linear rgb, metallic
 layout(location = 3) out vec4 outEmissive;   // linear rgb of the emissive texture (1 without one), roughness
+
+// Where a texture is read: its set of texture coordinates through its transform.
+vec2 uvOf(GpuTextureTransform transform) { return transformedTexCoord(transform, texCoords.xy, texCoords.zw); }
 
 void main() {
     GpuMaterial material = materials[materialIndex];
     vec4 baseColor = material.baseColorFactor;
     if (material.baseColorTexture >= 0)
-        baseColor *= texture(colorTextures[material.baseColorTexture], uv);
+        baseColor *= texture(colorTextures[material.baseColorTexture], uvOf(material.baseColorTransform));
     vec3 emissive = vec3(1.0f);
-    if (material.emissiveTexture >= 0) emissive = texture(colorTextures[material.emissiveTexture], uv).rgb;
+    if (material.emissiveTexture >= 0)
+        emissive = texture(colorTextures[material.emissiveTexture], uvOf(material.emissiveTransform)).rgb;
     vec2 metallicRoughness = vec2(material.metallic, material.roughness);
     if (material.metallicRoughnessTexture >= 0)
-        metallicRoughness *= texture(colorTextures[material.metallicRoughnessTexture], uv).bg;
+        metallicRoughness *=
+            texture(colorTextures[material.metallicRoughnessTexture], uvOf(material.metallicRoughnessTransform)).bg;
     metallicRoughness = clamp(metallicRoughness, 0.0f, 1.0f);
+    // glTF 2.0 §3.9.3: the occlusion texture's red channel, blended towards 1 by 1 − strength,
+    // scales the indirect light only.
+    float occlusion = 1.0f;
+    if (material.occlusionTexture >= 0) {
+        float red = texture(colorTextures[material.occlusionTexture], uvOf(material.occlusionTransform)).r;
+        occlusion = clamp(1.0f + material.occlusionStrength * (red - 1.0f), 0.0f, 1.0f);
+    }
 
     // Surfaces reflect on both sides (as in the reference path tracer); emission leaves the front only.
     vec3 normal = worldNormal;
@@ -50,21 +64,25 @@ void main() {
     // The side is the interpolated normal's; a normal texture tilts the normal of that side.
     bool frontFace = dot(normal, toCamera) >= 0.0f;
     if (material.normalTexture >= 0) {
-        // ∂position/∂u from screen-space derivatives (no tangents are stored): the same frame the
-        // path tracer takes from the triangle's edges. The ratio is the same whichever way the
-        // screen's y runs.
-        vec2 uvX = dFdx(uv), uvY = dFdy(uv);
+        // ∂position/∂u from screen-space derivatives (no tangents are stored), u the normal
+        // texture's own (after its transform): the same frame the path tracer takes from the
+        // triangle's edges. The ratio is the same whichever way the screen's y runs. The
+        // coordinates' derivatives are the interpolated sets' through the transform: lavapipe's
+        // derivatives of a computed value went wrong along the triangles' edges.
+        GpuTextureTransform transform = material.normalTransform;
+        vec2 uvX = transformedTexCoordDerivative(transform, dFdx(texCoords));
+        vec2 uvY = transformedTexCoordDerivative(transform, dFdy(texCoords));
         float determinant = uvX.x * uvY.y - uvY.x * uvX.y;
         if (abs(determinant) > 1e-20f) {
             vec3 alongU = (uvY.y * dFdx(worldPosition) - uvX.y * dFdy(worldPosition)) / determinant;
-            vec3 texel = texture(colorTextures[material.normalTexture], uv).rgb;
+            vec3 texel = texture(colorTextures[material.normalTexture], uvOf(transform)).rgb;
             normal = normalFromTexture(normal, alongU, texel, material.normalScale);
         }
     }
     if (!frontFace) normal = -normal;
 
     outPosition = vec4(worldPosition, float(materialIndex + 1u));
-    outNormal = vec4(normal, frontFace ? 1.0f : 0.0f);
+    outNormal = vec4(normal, gbufferSideOcclusion(frontFace, occlusion));
     outBaseColor = vec4(baseColor.rgb, metallicRoughness.x);
     outEmissive = vec4(emissive, metallicRoughness.y);
 }

@@ -8,12 +8,12 @@ layout(std430, set = 0, binding = 1) readonly buffer Vertices { GpuVertex vertic
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
-layout(location = 2) out vec2 uv;
+layout(location = 2) out vec4 texCoords;  // xy TEXCOORD_0, zw TEXCOORD_1
 
 void main() {
     GpuVertex vertex = vertices[gl_VertexIndex];
     worldPosition = vertex.positionU.xyz;
     worldNormal = vertex.normalV.xyz;
-    uv = vec2(vertex.positionU.w, vertex.normalV.w);
+    texCoords = vec4(vertex.positionU.w, vertex.normalV.w, vertex.texCoord1.xy);
     gl_Position = frame.viewProjection * vec4(worldPosition, 1.0f);
 }

@@ -4,13 +4,15 @@
 #define VCT_GPU_TYPES_H
 
 #include "cpp_glsl.h"
+#include "texture_transform.h"
 #include "voxel_grid.h"
 
 VCT_SHARED_BEGIN
 
 struct GpuVertex {
-    vec4 positionU;  // xyz position, w texture u
-    vec4 normalV;    // xyz normal, w texture v
+    vec4 positionU;  // xyz position, w texture u (TEXCOORD_0)
+    vec4 normalV;    // xyz normal, w texture v (TEXCOORD_0)
+    vec4 texCoord1;  // xy TEXCOORD_1 (TEXCOORD_0 where the file has none), zw unused
 };
 
 struct GpuMaterial {
@@ -25,6 +27,16 @@ struct GpuMaterial {
     int metallicRoughnessTexture;  // -1 = none; linear, blue scales metallic, green roughness (glTF)
     int normalTexture;             // -1 = none; linear, tangent space (glTF)
     float normalScale;             // scales the normal texture's x and y
+    int occlusionTexture;          // -1 = none; linear, red scales the indirect light (glTF)
+    float occlusionStrength;       // occlusion = 1 + strength · (red − 1)
+    uint unused0;
+    uint unused1;
+    // Where each texture is read (texture_transform.h).
+    GpuTextureTransform baseColorTransform;
+    GpuTextureTransform emissiveTransform;
+    GpuTextureTransform metallicRoughnessTransform;
+    GpuTextureTransform normalTransform;
+    GpuTextureTransform occlusionTransform;
 };
 
 struct GpuLight {

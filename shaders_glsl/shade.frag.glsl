@@ -2,6 +2,7 @@
 // The full-screen lighting pass: reads the G-buffer and writes HDR radiance (scene units).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
+#include "gbuffer_packing.h"
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = 1) readonly buffer Materials { GpuMaterial materials[]; };
@@ -10,7 +11,7 @@ layout(std430, set = 0, binding = 3) readonly buffer ShadowViews { ShadowView sh
 layout(set = 0, binding = 4) uniform sampler2DArrayShadow sunShadowMaps;
 layout(set = 0, binding = 5) uniform sampler2DArrayShadow localShadowMaps;
 layout(set = 0, binding = 6) uniform sampler2D gPosition;
-layout(set = 0, binding = 7) uniform sampler2D gNormal;
+layout(set = 0, binding = 7) uniform sampler2D gNormal;  // xyz, w = gbufferSideOcclusion
 layout(set = 0, binding = 8) uniform sampler2D gBaseColor;  // rgb, metallic
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
 layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
@@ -95,12 +96,12 @@ void main() {
         outRadiance = vec4(sky, 1.0f);
         return;
     }
-    vec4 normalFront = texelFetch(gNormal, pixel, 0);
+    vec4 normalSide = texelFetch(gNormal, pixel, 0);
     GpuMaterial material = materials[uint(positionMaterial.w) - 1u];
 
     SurfacePoint surface;
     surface.position = positionMaterial.xyz;
-    surface.normal = normalize(normalFront.xyz);
+    surface.normal = normalize(normalSide.xyz);
     surface.toViewer = normalize(frame.cameraPosition - surface.position);
     vec4 baseColorMetallic = texelFetch(gBaseColor, pixel, 0);
     vec4 emissiveRoughness = texelFetch(gEmissive, pixel, 0);
@@ -111,8 +112,9 @@ void main() {
 
     uint flags = frame.componentFlags;
     vec3 radiance = directLight(surface, flags);
-    if ((flags & SHOW_EMISSION) != 0u && normalFront.w > 0.5f)
+    if ((flags & SHOW_EMISSION) != 0u && gbufferFrontFace(normalSide.w))
         radiance += material.emission.rgb * emissiveRoughness.rgb;
-    radiance += indirectLight(surface, pixel, flags);
+    // The occlusion texture scales the indirect light, diffuse and specular, and the ambient term.
+    radiance += gbufferOcclusion(normalSide.w) * indirectLight(surface, pixel, flags);
     outRadiance = vec4(radiance, 1.0f);
 }

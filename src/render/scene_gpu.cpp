@@ -56,13 +56,25 @@ GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, con
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// Every texture transform's numbers are finite.
+bool finiteMapping(const Material& material) {
+    for (const TextureReference* texture :
+         {&material.baseColorTexture, &material.emissiveTexture, &material.metallicRoughnessTexture,
+          &material.normalTexture, &material.occlusionTexture})
+        if (!finite(glm::vec3(texture->offset, texture->rotation)) || !std::isfinite(texture->scale.x) ||
+            !std::isfinite(texture->scale.y))
+            return false;
+    return true;
+}
+
 }  // namespace
 
 void checkSceneCanBeRendered(const Scene& scene) {
     const auto fail = [&](const std::string& problem) { throw Error("scene '" + scene.name + "': " + problem); };
     for (size_t i = 0; i < scene.vertices.size(); ++i) {
         const Vertex& vertex = scene.vertices[i];
-        if (!finite(vertex.position) || !finite(vertex.normal) || !std::isfinite(vertex.u) || !std::isfinite(vertex.v))
+        if (!finite(vertex.position) || !finite(vertex.normal) || !std::isfinite(vertex.u) ||
+            !std::isfinite(vertex.v) || !std::isfinite(vertex.uv1.x) || !std::isfinite(vertex.uv1.y))
             fail("vertex " + std::to_string(i) + " holds a value that is not a finite number");
     }
     if (scene.indices.size() % 3 != 0) fail("the index count is not a multiple of 3");
@@ -82,7 +94,8 @@ void checkSceneCanBeRendered(const Scene& scene) {
         const glm::vec4 color = material.baseColorFactor;
         if (!finite(glm::vec3(color)) || !std::isfinite(color.a) || !finite(material.emission) ||
             !std::isfinite(material.metallic) || !std::isfinite(material.roughness) ||
-            !std::isfinite(material.specularWeight) || !std::isfinite(material.normalScale))
+            !std::isfinite(material.specularWeight) || !std::isfinite(material.normalScale) ||
+            !std::isfinite(material.occlusionStrength) || !finiteMapping(material))
             fail("material " + std::to_string(i) + " ('" + material.name +
                  "') holds a value that is not a finite number");
     }
@@ -144,11 +157,18 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         gpu.metallic = material.metallic;
         gpu.roughness = material.roughness;
         gpu.specularWeight = material.specularWeight;
-        gpu.baseColorTexture = material.baseColorTexture;
-        gpu.emissiveTexture = material.emissiveTexture;
-        gpu.metallicRoughnessTexture = material.metallicRoughnessTexture;
-        gpu.normalTexture = material.normalTexture;
+        gpu.baseColorTexture = material.baseColorTexture.index;
+        gpu.emissiveTexture = material.emissiveTexture.index;
+        gpu.metallicRoughnessTexture = material.metallicRoughnessTexture.index;
+        gpu.normalTexture = material.normalTexture.index;
         gpu.normalScale = material.normalScale;
+        gpu.occlusionTexture = material.occlusionTexture.index;
+        gpu.occlusionStrength = material.occlusionStrength;
+        gpu.baseColorTransform = textureTransform(material.baseColorTexture);
+        gpu.emissiveTransform = textureTransform(material.emissiveTexture);
+        gpu.metallicRoughnessTransform = textureTransform(material.metallicRoughnessTexture);
+        gpu.normalTransform = textureTransform(material.normalTexture);
+        gpu.occlusionTransform = textureTransform(material.occlusionTexture);
         gpuMaterials.push_back(gpu);
     }
     materials = uploadArray(context, gpuMaterials, storage);

@@ -47,10 +47,11 @@ uint32_t mortonCode(const glm::vec3& position, const Bounds& bounds) {
 // triangle's own texture coordinates, so a model whose one texture atlas glows in a few places
 // gets lights there and nowhere else.
 glm::vec3 triangleRadiance(const Scene& scene, const Material& material, const Vertex* const v[3]) {
-    if (material.emissiveTexture < 0 || size_t(material.emissiveTexture) >= scene.textures.size())
-        return material.emission;
-    const glm::vec2 uv[3] = {{v[0]->u, v[0]->v}, {v[1]->u, v[1]->v}, {v[2]->u, v[2]->v}};
-    return material.emission * meanLinearColorOverTriangle(scene.textures[size_t(material.emissiveTexture)], uv);
+    const TextureReference& texture = material.emissiveTexture;
+    if (texture.index < 0 || size_t(texture.index) >= scene.textures.size()) return material.emission;
+    const glm::vec2 uv[3] = {textureCoordinates(texture, *v[0]), textureCoordinates(texture, *v[1]),
+                             textureCoordinates(texture, *v[2])};
+    return material.emission * meanLinearColorOverTriangle(scene.textures[size_t(texture.index)], uv);
 }
 
 std::vector<Emitter> emissiveTriangles(const Scene& scene, std::vector<uint32_t>& sourceTriangle) {

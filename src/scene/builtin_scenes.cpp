@@ -296,7 +296,7 @@ Scene makePanelRoom() {
     addLampRoom(builder);
     builder.scene.textures.push_back(sunsetPicture(64, 36));
     const uint32_t screen = builder.addMaterial("screen", {0.05f, 0.05f, 0.05f}, glm::vec3(20.0f));
-    builder.scene.materials[screen].emissiveTexture = 0;
+    builder.scene.materials[screen].emissiveTexture.index = 0;
     // 2 cm in front of the back wall, facing the room; u to the right and v down as the camera sees it.
     const float z = 3.98f, left = 2.8f, right = 1.2f, bottom = 0.8f, top = 1.7f;
     const glm::vec3 normal(0.0f, 0.0f, -1.0f);

@@ -1,7 +1,7 @@
 // glTF 2.0 (.gltf/.glb) → vct::Scene, in four steps that each finish before the next begins:
 //   1. read the scene file and vet every external URI against the file policy (file_policy.h);
 //   2. parse with tinygltf, whose file-system callbacks can read only the vetted files and whose
-//      image callback decodes base colour and emissive images with stb_image, turning failures into notes;
+//      image callback decodes the material textures' images with stb_image, turning failures into notes;
 //   3. validate the whole model (gltf_validate.h);
 //   4. convert: flatten the node hierarchy of the default scene to world space.
 #include <stb/stb_image.h>
@@ -41,7 +41,7 @@ struct ParseContext {
     std::string file;
     // tinygltf asks for "<base dir>/<its own decoding of the URI>"; only these paths exist for it.
     std::map<std::string, fs::path> vettedFiles;
-    std::set<int> colorImages;  // images worth decoding: base colour, emissive, metallic-roughness, normal
+    std::set<int> colorImages;                 // images worth decoding: those of the material textures
     std::map<int, std::string> imageProblems;  // why an image has no pixels
     // Each distinct image (file, buffer range or data URI) is decoded once, by its first entry;
     // later entries naming the same bytes point at that one.
@@ -125,7 +125,7 @@ std::string imageIdentity(const tinygltf::Image& image, const unsigned char* byt
     return "bytes " + std::string(reinterpret_cast<const char*>(bytes), size > 0 ? size_t(size) : 0);
 }
 
-// Decodes a base colour or emissive image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
+// Decodes a material texture's image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
 // is noted for the loader to report as a warning; only a range the file does not hold stops the load.
 bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
@@ -237,7 +237,8 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
     vet("buffers", true);
     vet("images", false);
 
-    // Only base colour, emissive, metallic-roughness and normal images are decoded; the others are not used.
+    // Only the images of the material textures (base colour, emissive, metallic-roughness, normal,
+    // occlusion) are decoded; the others are not used.
     const auto materials = document.find("materials");
     const auto textures = document.find("textures");
     if (materials == document.end() || !materials->is_array() || textures == document.end() || !textures->is_array())
@@ -253,6 +254,7 @@ void vetUris(const nlohmann::json& document, const fs::path& sceneFolder, ParseC
         decode(member(member(&material, "pbrMetallicRoughness"), "metallicRoughnessTexture"));
         decode(member(&material, "normalTexture"));
         decode(member(&material, "emissiveTexture"));
+        decode(member(&material, "occlusionTexture"));
     }
 }
 
@@ -332,6 +334,7 @@ struct Converter {
     Scene& scene;
     std::map<std::pair<int, bool>, int> sceneTextureOfImage;  // (glTF image, sRGB) → Scene::textures index or -1
     int defaultMaterial = -1;
+    std::set<uint32_t> warnedNoTexCoord1;  // materials named in a "has no TEXCOORD_1" warning
 
     void warn(const std::string& path, const std::string& problem) {
         const std::string message = scene.name + ": " + path + ": " + problem;
@@ -349,7 +352,6 @@ struct Converter {
             {"KHR_materials_ior", "every dielectric has the default index of refraction 1.5"},
             {"KHR_materials_iridescence", "the iridescence is not drawn"},
             {"KHR_materials_anisotropy", "highlights are drawn isotropic"},
-            {"KHR_texture_transform", "textures are sampled without their offset, rotation and scale"},
             {"KHR_draco_mesh_compression",
              "Draco-compressed meshes are drawn only where the file also holds them "
              "uncompressed"},
@@ -399,17 +401,8 @@ struct Converter {
         }
     }
 
-    // The Scene texture of a material's colour texture (base colour or emissive), decoded once per
-    // image; -1 if there is none or its image could not be read (`fallback` says what is used instead).
-    int colorTexture(const std::string& materialPath, int textureIndex, const std::string& fallback) {
-        return sceneTexture(materialPath, textureIndex, fallback, true);
-    }
-
-    // A texture of linear data (metallic-roughness, normals).
-    int dataTexture(const std::string& materialPath, int textureIndex, const std::string& fallback) {
-        return sceneTexture(materialPath, textureIndex, fallback, false);
-    }
-
+    // The Scene texture of a glTF texture, decoded once per image and use (sRGB colour or linear
+    // data); -1 if there is none or its image could not be read (`fallback` says what is used instead).
     int sceneTexture(const std::string& materialPath, int textureIndex, const std::string& fallback, bool srgb) {
         if (textureIndex < 0) return -1;
         const int source = model.textures[size_t(textureIndex)].source;
@@ -441,11 +434,42 @@ struct Converter {
         return index;
     }
 
-    // Only TEXCOORD_0 is read (Vertex holds one set).
-    void warnAboutTexCoord(const std::string& texturePath, int texCoord) {
-        if (texCoord != 0)
-            warn(texturePath + ".texCoord",
-                 "TEXCOORD_" + std::to_string(texCoord) + " is not read; the texture is sampled with TEXCOORD_0");
+    // The material's reference to a texture from a glTF textureInfo at `path` (any slot's: they share
+    // index, texCoord and extensions): the texture, decoded once per image as sRGB colour or linear
+    // data, and where it is read. `fallback` says what stands in for an image that cannot be read.
+    template <typename TextureInfo>
+    TextureReference textureReference(size_t material, const std::string& path, const TextureInfo& info, bool srgb,
+                                      const std::string& fallback) {
+        TextureReference reference;
+        reference.index = sceneTexture(at("materials", material), info.index, fallback, srgb);
+        if (reference.index < 0) return reference;
+        int texCoord = info.texCoord;
+        std::string texCoordPath = path + ".texCoord";
+        // KHR_texture_transform (its values were checked by the validator).
+        const auto found = info.extensions.find("KHR_texture_transform");
+        if (found != info.extensions.end() && found->second.IsObject()) {
+            const tinygltf::Value& transform = found->second;
+            auto pair = [&](const char* key, glm::vec2 fallbackValue) {
+                if (!transform.Has(key)) return fallbackValue;
+                const tinygltf::Value& value = transform.Get(key);
+                return glm::vec2(float(value.Get(0).GetNumberAsDouble()), float(value.Get(1).GetNumberAsDouble()));
+            };
+            reference.offset = pair("offset", glm::vec2(0.0f));
+            reference.scale = pair("scale", glm::vec2(1.0f));
+            if (transform.Has("rotation")) reference.rotation = float(transform.Get("rotation").GetNumberAsDouble());
+            if (transform.Has("texCoord")) {
+                texCoord = transform.Get("texCoord").GetNumberAsInt();
+                texCoordPath = path + ".extensions.KHR_texture_transform.texCoord";
+            }
+        }
+        if (texCoord != 0 && texCoord != 1) {
+            warn(texCoordPath, "TEXCOORD_" + std::to_string(texCoord) +
+                                   " is not read (only TEXCOORD_0 and TEXCOORD_1 are); the texture is sampled with "
+                                   "TEXCOORD_0");
+            texCoord = 0;
+        }
+        reference.texCoord = uint32_t(texCoord);
+        return reference;
     }
 
     static double extensionNumber(const tinygltf::ExtensionMap& extensions, const char* extension, const char* key,
@@ -463,27 +487,22 @@ struct Converter {
             material.name = source.name;
             if (pbr.baseColorFactor.size() == 4)
                 material.baseColorFactor = glm::vec4(glm::make_vec4(pbr.baseColorFactor.data()));
-            material.baseColorTexture =
-                colorTexture(at("materials", i), pbr.baseColorTexture.index, "base colour factor");
-            if (material.baseColorTexture >= 0)
-                warnAboutTexCoord(at("materials", i) + ".pbrMetallicRoughness.baseColorTexture",
-                                  pbr.baseColorTexture.texCoord);
+            const std::string path = at("materials", i);
+            material.baseColorTexture = textureReference(i, path + ".pbrMetallicRoughness.baseColorTexture",
+                                                         pbr.baseColorTexture, true, "base colour factor");
             material.emissiveTexture =
-                colorTexture(at("materials", i), source.emissiveTexture.index, "emissive factor");
-            if (material.emissiveTexture >= 0)
-                warnAboutTexCoord(at("materials", i) + ".emissiveTexture", source.emissiveTexture.texCoord);
+                textureReference(i, path + ".emissiveTexture", source.emissiveTexture, true, "emissive factor");
             material.metallic = float(pbr.metallicFactor);
             material.roughness = float(pbr.roughnessFactor);
             material.metallicRoughnessTexture =
-                dataTexture(at("materials", i), pbr.metallicRoughnessTexture.index, "metallic and roughness factors");
-            if (material.metallicRoughnessTexture >= 0)
-                warnAboutTexCoord(at("materials", i) + ".pbrMetallicRoughness.metallicRoughnessTexture",
-                                  pbr.metallicRoughnessTexture.texCoord);
-            material.normalTexture =
-                dataTexture(at("materials", i), source.normalTexture.index, "interpolated vertex normals");
+                textureReference(i, path + ".pbrMetallicRoughness.metallicRoughnessTexture",
+                                 pbr.metallicRoughnessTexture, false, "metallic and roughness factors");
+            material.normalTexture = textureReference(i, path + ".normalTexture", source.normalTexture, false,
+                                                      "interpolated vertex normals");
             material.normalScale = float(source.normalTexture.scale);
-            if (material.normalTexture >= 0)
-                warnAboutTexCoord(at("materials", i) + ".normalTexture", source.normalTexture.texCoord);
+            material.occlusionTexture = textureReference(i, path + ".occlusionTexture", source.occlusionTexture, false,
+                                                         "unoccluded indirect light");
+            material.occlusionStrength = float(source.occlusionTexture.strength);
             material.specularWeight =
                 float(extensionNumber(source.extensions, "KHR_materials_specular", "specularFactor", 1.0));
             const double strength =
@@ -493,6 +512,19 @@ struct Converter {
             material.doubleSided = source.doubleSided;
             scene.materials.push_back(std::move(material));
         }
+    }
+
+    // The names of the material's textures that are read with TEXCOORD_1, "" if none is.
+    static std::string slotsReadingTexCoord1(const Material& material) {
+        std::string names;
+        for (const auto& [reference, name] : {std::pair{&material.baseColorTexture, "baseColorTexture"},
+                                              {&material.metallicRoughnessTexture, "metallicRoughnessTexture"},
+                                              {&material.normalTexture, "normalTexture"},
+                                              {&material.occlusionTexture, "occlusionTexture"},
+                                              {&material.emissiveTexture, "emissiveTexture"}})
+            if (reference->index >= 0 && reference->texCoord == 1)
+                names += (names.empty() ? "" : ", ") + std::string(name);
+        return names;
     }
 
     int materialOf(const tinygltf::Primitive& primitive) {
@@ -569,14 +601,23 @@ struct Converter {
                            std::to_string(indices.size() % 3) + " are ignored");
         const std::vector<uint32_t> corners = triangleCorners(mode, indices);
 
-        const auto normalAttribute = primitive.attributes.find("NORMAL");
-        const auto uvAttribute = primitive.attributes.find("TEXCOORD_0");
-        const std::vector<float> normals = normalAttribute != primitive.attributes.end()
-                                               ? readAccessorFloats(model, normalAttribute->second)
-                                               : std::vector<float>{};
-        const std::vector<float> uvs = uvAttribute != primitive.attributes.end()
-                                           ? readAccessorFloats(model, uvAttribute->second)
-                                           : std::vector<float>{};
+        auto readAttribute = [&](const char* name) {
+            const auto attribute = primitive.attributes.find(name);
+            return attribute != primitive.attributes.end() ? readAccessorFloats(model, attribute->second)
+                                                           : std::vector<float>{};
+        };
+        const std::vector<float> normals = readAttribute("NORMAL");
+        const std::vector<float> uvs = readAttribute("TEXCOORD_0");
+        std::vector<float> uvs1 = readAttribute("TEXCOORD_1");
+        const uint32_t material = uint32_t(materialOf(primitive));
+        if (uvs1.empty()) {
+            const std::string slots = slotsReadingTexCoord1(scene.materials[material]);
+            if (!slots.empty() && warnedNoTexCoord1.insert(material).second)
+                warn(path + ".attributes", "has no TEXCOORD_1, which " + at("materials", material) + "'s " + slots +
+                                               " reads; TEXCOORD_0 stands in for it here and on the material's "
+                                               "other primitives without one");
+            uvs1 = uvs;
+        }
         const glm::dmat3 normalMatrix = glm::inverseTranspose(linear);
 
         std::vector<Vertex> vertices(vertexCount);
@@ -592,9 +633,9 @@ struct Converter {
                 vertex.u = uvs[2 * i];
                 vertex.v = uvs[2 * i + 1];
             }
+            if (!uvs1.empty()) vertex.uv1 = glm::vec2(uvs1[2 * i], uvs1[2 * i + 1]);
         }
 
-        const uint32_t material = uint32_t(materialOf(primitive));
         const bool mirrored = determinant < 0.0;  // a mirroring transform turns front faces into back faces
         if (scene.vertices.size() + std::max(vertexCount, corners.size()) > UINT32_MAX)
             throw Error(scene.name + ": " + path + ": the scene has more vertices than 32-bit indices can address");

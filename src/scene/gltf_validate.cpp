@@ -275,7 +275,7 @@ struct Validator {
     // The values the loader reads: finite positions, normals and texture coordinates, and
     // indices inside the vertex count. Read only once the geometry is known to fit.
     void checkPrimitiveValues(const std::string& path, const tinygltf::Primitive& primitive) {
-        for (const char* name : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
+        for (const char* name : {"POSITION", "NORMAL", "TEXCOORD_0", "TEXCOORD_1"}) {
             const auto attribute = primitive.attributes.find(name);
             if (attribute != primitive.attributes.end())
                 checkFiniteValues(path + ".attributes." + name, attribute->second);
@@ -344,8 +344,36 @@ struct Validator {
         checkSceneBufferFits(file + ": ", indices, sizeof(uint32_t), "triangle corners (indices)", limits);
     }
 
-    void checkTextureReference(const std::string& path, const tinygltf::TextureInfo& info) const {
+    // Any slot's textureInfo: the texture exists, and its texCoord and KHR_texture_transform hold
+    // numbers the loader can read.
+    template <typename TextureInfo>
+    void checkTextureReference(const std::string& path, const TextureInfo& info) const {
         checkReference(path + ".index", info.index, model.textures.size(), "texture", true);
+        if (info.texCoord < 0) fail(path + ".texCoord", std::to_string(info.texCoord) + " is negative");
+        const auto found = info.extensions.find("KHR_texture_transform");
+        if (found == info.extensions.end()) return;
+        const std::string transformPath = path + ".extensions.KHR_texture_transform";
+        const tinygltf::Value& transform = found->second;
+        if (!transform.IsObject()) fail(transformPath, "is not an object");
+        for (const char* key : {"offset", "scale"}) {
+            if (!transform.Has(key)) continue;
+            const tinygltf::Value& pair = transform.Get(key);
+            if (!pair.IsArray() || pair.ArrayLen() != 2 || !pair.Get(0).IsNumber() || !pair.Get(1).IsNumber())
+                fail(transformPath + "." + key, "is not an array of two numbers");
+            if (!std::isfinite(pair.Get(0).GetNumberAsDouble()) || !std::isfinite(pair.Get(1).GetNumberAsDouble()))
+                fail(transformPath + "." + key, "holds a value that is not a finite number");
+        }
+        if (transform.Has("rotation")) {
+            const tinygltf::Value& rotation = transform.Get("rotation");
+            if (!rotation.IsNumber()) fail(transformPath + ".rotation", "is not a number");
+            if (!std::isfinite(rotation.GetNumberAsDouble()))
+                fail(transformPath + ".rotation", "is not a finite number");
+        }
+        if (transform.Has("texCoord")) {
+            const tinygltf::Value& texCoord = transform.Get("texCoord");
+            if (!texCoord.IsInt() || texCoord.GetNumberAsInt() < 0)
+                fail(transformPath + ".texCoord", "is not a non-negative integer");
+        }
     }
 
     void checkMaterials() const {
@@ -367,10 +395,9 @@ struct Validator {
             checkTextureReference(path + ".pbrMetallicRoughness.metallicRoughnessTexture",
                                   pbr.metallicRoughnessTexture);
             checkTextureReference(path + ".emissiveTexture", material.emissiveTexture);
-            checkReference(path + ".normalTexture.index", material.normalTexture.index, model.textures.size(),
-                           "texture", true);
-            checkReference(path + ".occlusionTexture.index", material.occlusionTexture.index, model.textures.size(),
-                           "texture", true);
+            checkTextureReference(path + ".normalTexture", material.normalTexture);
+            checkTextureReference(path + ".occlusionTexture", material.occlusionTexture);
+            checkNumber(path + ".occlusionTexture.strength", material.occlusionTexture.strength, 0.0, 1.0);
             checkExtensionNumber(material.extensions, path, "KHR_materials_emissive_strength", "emissiveStrength", 0.0,
                                  std::numeric_limits<double>::max());
             const double emission =
@@ -554,7 +581,8 @@ struct Validator {
 
 const std::vector<std::string>& supportedGltfExtensions() {
     static const std::vector<std::string> names = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                   "KHR_materials_specular", "KHR_mesh_quantization"};
+                                                   "KHR_materials_specular", "KHR_mesh_quantization",
+                                                   "KHR_texture_transform"};
     return names;
 }
 

@@ -6,6 +6,14 @@
 
 namespace vct {
 
+glsl::GpuTextureTransform textureTransform(const TextureReference& reference) {
+    return glsl::textureTransform(reference.offset, reference.rotation, reference.scale, reference.texCoord);
+}
+
+glm::vec2 textureCoordinates(const TextureReference& reference, const Vertex& vertex) {
+    return glsl::transformedTexCoord(textureTransform(reference), glm::vec2(vertex.u, vertex.v), vertex.uv1);
+}
+
 float srgbToLinear(float encoded) {
     return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
@@ -58,10 +66,10 @@ glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv
 
 glm::vec3 voxelEmission(const Scene& scene, const Material& material) {
     // Without emission the texture's mean (a pass over every texel) would only be multiplied by zero.
-    if (material.emissiveTexture < 0 || size_t(material.emissiveTexture) >= scene.textures.size() ||
-        material.emission == glm::vec3(0.0f))
+    const int texture = material.emissiveTexture.index;
+    if (texture < 0 || size_t(texture) >= scene.textures.size() || material.emission == glm::vec3(0.0f))
         return material.emission;
-    return material.emission * meanLinearColor(scene.textures[size_t(material.emissiveTexture)]);
+    return material.emission * meanLinearColor(scene.textures[size_t(texture)]);
 }
 
 }  // namespace vct

@@ -4,8 +4,15 @@
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
+#include "texture_transform.h"
 
 namespace vct {
+
+// The transform through which the renderer and the path tracer read `reference`'s texture.
+glsl::GpuTextureTransform textureTransform(const TextureReference& reference);
+
+// The coordinates at which `vertex` reads the texture of `reference`.
+glm::vec2 textureCoordinates(const TextureReference& reference, const Vertex& vertex);
 
 // The sRGB decoding function (IEC 61966-2-1).
 float srgbToLinear(float encoded);

@@ -16,32 +16,50 @@
 
 namespace vct {
 
-// 32 bytes, laid out as two vec4 so the GPU can read it from a storage buffer (std430).
+// 48 bytes, laid out as three vec4 so the GPU can read it from a storage buffer (std430).
 struct Vertex {
     glm::vec3 position{0.0f};
-    float u = 0.0f;
+    float u = 0.0f;  // TEXCOORD_0
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     float v = 0.0f;
+    glm::vec2 uv1{0.0f};     // TEXCOORD_1; a file without one gets TEXCOORD_0 here
+    glm::vec2 unused{0.0f};  // fills the third vec4
+};
+
+// A material's use of a texture, as a glTF textureInfo says it: which texture, read at which
+// texture-coordinate set, through KHR_texture_transform's offset, rotation and scale
+// (shaders_glsl/texture_transform.h).
+struct TextureReference {
+    int index = -1;         // into Scene::textures, -1 = none
+    uint32_t texCoord = 0;  // 0 = TEXCOORD_0 (Vertex::u, v), 1 = TEXCOORD_1 (Vertex::uv1)
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;  // radians
+    glm::vec2 scale{1.0f};
 };
 
 // glTF pbrMetallicRoughness, plus emission and KHR_materials_specular's weight.
 struct Material {
     std::string name;
-    glm::vec4 baseColorFactor{1.0f};  // linear RGB + alpha
-    int baseColorTexture = -1;        // index into Scene::textures, -1 = none
-    float metallic = 1.0f;            // glTF defaults
+    glm::vec4 baseColorFactor{1.0f};    // linear RGB + alpha
+    TextureReference baseColorTexture;  // sRGB
+    float metallic = 1.0f;              // glTF defaults
     float roughness = 1.0f;
-    // Index into Scene::textures (linear), -1 = none: blue scales `metallic`, green `roughness`.
-    int metallicRoughnessTexture = -1;
-    // Index into Scene::textures (linear), -1 = none: the tangent-space normal (glTF: +x along
-    // increasing u, +y up the image), its x and y scaled by `normalScale`.
-    int normalTexture = -1;
+    // Linear: blue scales `metallic`, green `roughness`.
+    TextureReference metallicRoughnessTexture;
+    // Linear: the tangent-space normal (glTF: +x along increasing u, +y up the image, u and v the
+    // texture's own, after its transform), its x and y scaled by `normalScale`.
+    TextureReference normalTexture;
     float normalScale = 1.0f;
+    // Linear: red is how much of the indirect light reaches the surface, 1 + occlusionStrength ·
+    // (red − 1) (glTF 2.0 §3.9.3). The renderer applies it; the path tracer, which finds occlusion
+    // itself, does not.
+    TextureReference occlusionTexture;
+    float occlusionStrength = 1.0f;
     // KHR_materials_specular specularFactor: 1 = glTF default dielectric (F0 = 0.04),
     // 0 = pure Lambertian (used by the Cornell box, whose reflectances are diffuse).
     float specularWeight = 1.0f;
-    glm::vec3 emission{0.0f};  // emissiveFactor × KHR_materials_emissive_strength: radiance
-    int emissiveTexture = -1;  // index into Scene::textures, -1 = none; multiplies `emission`
+    glm::vec3 emission{0.0f};          // emissiveFactor × KHR_materials_emissive_strength: radiance
+    TextureReference emissiveTexture;  // sRGB; multiplies `emission`
     bool doubleSided = false;
 };
 

@@ -115,7 +115,7 @@ void drawMaterialsSection(const ViewerState& state) {
         ImGui::TableNextColumn();
         const glm::vec4 base = material.baseColorFactor;
         ImGui::ColorButton("base colour", ImVec4(base.r, base.g, base.b, 1.0f), swatch, swatchSize);
-        if (material.baseColorTexture >= 0) {
+        if (material.baseColorTexture.index >= 0) {
             ImGui::SameLine();
             ImGui::TextDisabled("tex");
         }
@@ -130,7 +130,7 @@ void drawMaterialsSection(const ViewerState& state) {
             const glm::vec3 hue = material.emission / strongest;
             ImGui::ColorButton("emissive hue", ImVec4(hue.r, hue.g, hue.b, 1.0f), swatch, swatchSize);
             ImGui::SameLine();
-            ImGui::Text("%.3g%s", strongest, material.emissiveTexture >= 0 ? " tex" : "");
+            ImGui::Text("%.3g%s", strongest, material.emissiveTexture.index >= 0 ? " tex" : "");
         } else {
             ImGui::TextDisabled("-");
         }

@@ -151,7 +151,7 @@ TEST(EmissiveTextureMean, OnlyTheTrianglesMappedOntoTheGlowBecomeLights) {
     scene.textures.push_back(glowingCorner());
     Material glow;
     glow.emission = glm::vec3(3.0f);
-    glow.emissiveTexture = 0;
+    glow.emissiveTexture.index = 0;
     scene.materials = {glow};
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) {

@@ -254,7 +254,7 @@ TEST(GltfLoader, ConvertsMaterialFactorsAndExtensions) {
     expectNear(material.emission, {4.0f, 2.0f, 0.0f});
     EXPECT_FLOAT_EQ(material.specularWeight, 0.0f);
     EXPECT_TRUE(material.doubleSided);
-    EXPECT_EQ(material.baseColorTexture, -1);
+    EXPECT_EQ(material.baseColorTexture.index, -1);
     EXPECT_EQ(scene.triangleMaterials[0], 0u);
 }
 
@@ -405,7 +405,7 @@ TEST(GltfLoader, DecodesEightBitPngBaseColorTexture) {
     folder.write("albedo.png", test::encodePng(2, 1, 4, 8, {255, 0, 0, 255, 10, 20, 30, 40}));
     const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
     ASSERT_EQ(scene.textures.size(), 1u);
-    ASSERT_EQ(scene.materials[0].baseColorTexture, 0);
+    ASSERT_EQ(scene.materials[0].baseColorTexture.index, 0);
     const Texture& texture = scene.textures[0];
     EXPECT_EQ(texture.width, 2u);
     EXPECT_EQ(texture.height, 1u);
@@ -430,7 +430,7 @@ TEST(GltfLoader, DecodesTextureEmbeddedInGlb) {
     TempFolder folder;
     const Scene scene = loadGltf(gltf.writeGlb(folder, "scene").string());
     ASSERT_EQ(scene.textures.size(), 1u);
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.index, 0);
     EXPECT_EQ(scene.textures[0].rgba8, (std::vector<uint8_t>{1, 2, 3, 4}));
 }
 
@@ -476,7 +476,7 @@ TEST(GltfLoader, ImageNamedByManyEntriesIsDecodedOnce) {
         ASSERT_EQ(scene.textures.size(), 1u);
         EXPECT_EQ(scene.textures[0].rgba8.size(), 64u * 64 * 4);
         ASSERT_GE(scene.materials.size(), 64u);  // and the default material of the untextured triangle
-        for (size_t i = 0; i < 64; ++i) EXPECT_EQ(scene.materials[i].baseColorTexture, 0);
+        for (size_t i = 0; i < 64; ++i) EXPECT_EQ(scene.materials[i].baseColorTexture.index, 0);
         EXPECT_TRUE(scene.warnings.empty());
     }
     GltfBuilder gltf = manyTexturedMaterials(8, {"unused"});
@@ -536,7 +536,7 @@ TEST(GltfLoader, MissingTextureWarnsAndFallsBackToTheFactor) {
     TempFolder folder;
     const std::string path = gltf.writeGltf(folder, "scene").string();
     const Scene scene = loadGltf(path);
-    EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.index, -1);
     EXPECT_EQ(scene.materials[0].baseColorFactor, glm::vec4(1, 0, 0, 1));
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_NE(scene.warnings[0].find(path), std::string::npos) << scene.warnings[0];
@@ -548,7 +548,7 @@ TEST(GltfLoader, CorruptTextureWarnsAndFallsBackToTheFactor) {
     TempFolder folder;
     folder.write("corrupt.png", "\x89PNG but not really");
     const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
-    EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.index, -1);
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_NE(scene.warnings[0].find("corrupt.png"), std::string::npos) << scene.warnings[0];
 }

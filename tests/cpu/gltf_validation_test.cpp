@@ -293,7 +293,7 @@ TEST(GltfValidation, HugeAccessorWithoutBufferViewIsRefusedBeforeAllocating) {
 TEST(GltfValidation, MeshOfMoreVerticesThanABufferTakesIsRefusedFromItsCounts) {
     // 2²⁸ positions of zeros, with no buffer view (so the file is a few hundred bytes), as the
     // mesh's only attribute: without normals every triangle gets vertices of its own, 3 × ⌊2²⁸/3⌋.
-    // Read, they would take about 23 GB; the counts alone refuse them, at once. The sentence gives
+    // Read, they would take about 35 GB; the counts alone refuse them, at once. The sentence gives
     // the file's count first, then the one the loader would build.
     for (bool sparse : {false, true}) {
         GltfBuilder gltf = test::triangleScene();
@@ -310,23 +310,23 @@ TEST(GltfValidation, MeshOfMoreVerticesThanABufferTakesIsRefusedFromItsCounts) {
         gltf.document["accessors"].push_back(huge);
         gltf.document["meshes"][0]["primitives"][0]["attributes"] = {{"POSITION", 2}};
         expectRefused(gltf,
-                      "its 268435456 vertices (268435455 once each triangle has its own) need 8192 MiB in one "
+                      "its 268435456 vertices (268435455 once each triangle has its own) need 12288 MiB in one "
                       "storage buffer, more than a typical GPU's "
-                      "maxStorageBufferRange of 2048 MiB; at most 67108864 vertices fit");
+                      "maxStorageBufferRange of 2048 MiB; at most 44739242 vertices fit");
     }
 }
 
 TEST(GltfValidation, SceneOverTheDevicesBufferLimitIsRefusedWithTheRenderersSentence) {
-    GltfBuilder gltf = test::triangleScene();  // 3 vertices of 32 bytes
+    GltfBuilder gltf = test::triangleScene();  // 3 vertices of 48 bytes
     TempFolder folder;
     const std::string path = gltf.writeGltf(folder, "scene").string();
     LoadOptions options;
-    options.bufferLimits = {64, "a small device"};
+    options.bufferLimits = {96, "a small device"};
     expectRefused(path,
-                  "its 3 vertices need 96 bytes in one storage buffer, more than a small device's "
-                  "maxStorageBufferRange of 64 bytes; at most 2 vertices fit",
+                  "its 3 vertices need 144 bytes in one storage buffer, more than a small device's "
+                  "maxStorageBufferRange of 96 bytes; at most 2 vertices fit",
                   options);
-    options.bufferLimits.maxBufferBytes = 96;
+    options.bufferLimits.maxBufferBytes = 144;
     EXPECT_EQ(loadError(path, options), "");
 }
 

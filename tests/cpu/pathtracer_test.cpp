@@ -10,10 +10,13 @@
 #include "bvh.h"
 #include "lights.h"
 #include "path_tracer.h"
+#include "pathtracer_test_helpers.h"
 #include "sampling.h"
 
 namespace vct::pt {
 namespace {
+
+using namespace test;
 
 // Tolerances, in one place.
 constexpr double kFurnaceMeanTolerance = 0.01;    // relative, image mean
@@ -22,21 +25,6 @@ constexpr double kAnalyticPixelTolerance = 0.01;  // relative, point light over 
 constexpr double kSigmas = 4.5;                   // agreement of independent estimates, in standard errors
 constexpr double kPdfIntegralTolerance = 0.005;   // absolute
 constexpr double kSamplerTolerance = 0.03;
-
-Material lambertian(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
-    Material material;
-    material.baseColorFactor = glm::vec4(albedo, 1.0f);
-    material.metallic = 0.0f;
-    material.roughness = 1.0f;
-    material.specularWeight = 0.0f;
-    material.emission = emission;
-    return material;
-}
-
-uint32_t addMaterial(Scene& scene, const Material& material) {
-    scene.materials.push_back(material);
-    return uint32_t(scene.materials.size() - 1);
-}
 
 void addTriangle(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material) {
     const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
@@ -126,17 +114,6 @@ Scene makeTestRoom() {
     scene.lights.push_back(light);
     scene.cameras.push_back(cameraLookingAt(glm::vec3(0.0f, 0.0f, 0.95f), glm::vec3(0.0f, -0.2f, 0.0f), 1.4f));
     return scene;
-}
-
-RenderSettings smallRender(const Scene& scene, uint32_t size, uint32_t spp, Component component, uint64_t seed) {
-    RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.samplesPerPixel = spp;
-    settings.component = component;
-    settings.seed = seed;
-    settings.threads = 2;
-    settings.camera = scene.cameras.at(0);
-    return settings;
 }
 
 bool allFinite(const Image& image) {
@@ -275,28 +252,6 @@ TEST(PathTracer, PunctualLightsOverLambertianPlaneFollowTheirFalloff) {
     }
 }
 
-// `scene` (its textures set) plus a 2 × 2 plane facing up with `material`, u = (x + 1)/2 and
-// v = (z + 1)/2, lit by a sun of E = π travelling along `sunTravel`, and a camera above looking
-// down that sees x, z ∈ [−½, ½] with image right = +x (so up the image is −z).
-void addSunlitPlaneSeenFromAbove(Scene& scene, const Material& material, glm::vec3 sunTravel) {
-    const uint32_t plane = addMaterial(scene, material);
-    for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
-        scene.vertices.push_back({glm::vec3(x, 0.0f, z), 0.5f * (x + 1.0f), glm::vec3(0, 1, 0), 0.5f * (z + 1.0f)});
-    scene.indices = {0, 2, 1, 0, 3, 2};
-    scene.triangleMaterials = {plane, plane};
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(sunTravel);
-    sun.intensity = kPi;
-    scene.lights.push_back(sun);
-    Camera camera;
-    camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
-    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // image right = +x
-    camera.yfov = 2.0f * std::atan(0.5f);      // sees x, z ∈ [−½, ½]
-    scene.cameras.push_back(camera);
-}
-
 TEST(PathTracer, TheSkyIsSeenDirectlyAndLightsAnOpenPlaneIndirectly) {
     // A grey Lambertian plane (albedo 0.5) under a uniform sky L and nothing else (the sun off),
     // seen from above with a view twice as wide as the plane: its pixels get irradiance π·L from the
@@ -333,7 +288,7 @@ TEST(PathTracer, BaseColorTextureIsSrgbDecodedAndFilteredAtTheHitUv) {
     texture.rgba8 = {255, 0, 0, 255, 0, 128, 0, 255};
     scene.textures.push_back(texture);
     Material material = lambertian(glm::vec3(1.0f, 0.5f, 1.0f));
-    material.baseColorTexture = 0;
+    material.baseColorTexture.index = 0;
     addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.0f, -1.0f, 0.0f));
     const PathTracer tracer = createPathTracer(scene);
     const RenderResult result = render(tracer, smallRender(scene, 16, 256, Component::Full, 2));
@@ -362,7 +317,7 @@ TEST(PathTracer, MetallicRoughnessTextureIsLinearAndScalesTheFactors) {
         Material material = lambertian(glm::vec3(1.0f));
         material.metallic = metallic;
         material.roughness = 1.0f;
-        material.metallicRoughnessTexture = textured ? 0 : -1;
+        material.metallicRoughnessTexture.index = textured ? 0 : -1;
         addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.0f, -1.0f, 0.0f));
         return render(createPathTracer(scene), smallRender(scene, 8, 64, Component::Full, 2)).image;
     };
@@ -391,7 +346,7 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
         texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
     scene.textures.push_back(texture);
     Material material = lambertian(glm::vec3(1.0f));
-    material.normalTexture = 0;
+    material.normalTexture.index = 0;
     addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
     const glm::vec3 toSun = -scene.lights.back().direction;
     const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
@@ -414,18 +369,6 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     }
 }
 
-// A texture `width` × 1, black on its left half and white on its right (sRGB 0 and 255).
-Texture halfBlackTexture(uint32_t width) {
-    Texture texture;
-    texture.width = width;
-    texture.height = 1;
-    for (uint32_t x = 0; x < width; ++x) {
-        const uint8_t value = x < width / 2 ? 0 : 255;
-        texture.rgba8.insert(texture.rgba8.end(), {value, value, value, 255});
-    }
-    return texture;
-}
-
 // A quad with u from 0 to 1 along `right` and v from 0 to 1 along `down`, facing down × right: the
 // side from which the texture reads as an image (right to the right, down downwards).
 void addTexturedQuad(Scene& scene, glm::vec3 corner, glm::vec3 right, glm::vec3 down, uint32_t material) {
@@ -441,7 +384,7 @@ void addTexturedQuad(Scene& scene, glm::vec3 corner, glm::vec3 right, glm::vec3 
 
 Material texturedEmitter(glm::vec3 emission) {
     Material material = lambertian(glm::vec3(0.0f), emission);
-    material.emissiveTexture = 0;
+    material.emissiveTexture.index = 0;
     return material;
 }
 

@@ -592,7 +592,7 @@ TEST_F(Voxelize, AnEmissiveTextureGivesTheFactorTimesItsMeanColour) {
     texture.height = 1;
     texture.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
     scene.textures.push_back(texture);
-    scene.materials[0].emissiveTexture = 0;
+    scene.materials[0].emissiveTexture.index = 0;
     const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
     const size_t voxel = 5 + 32 * (5 + 32 * 5);
     EXPECT_NEAR(gpu.emission[voxel].r, 1.5f, kEmissionTolerance * 3.0f);

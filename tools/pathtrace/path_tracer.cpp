@@ -65,10 +65,10 @@ glm::vec3 sampleTexture(const LinearTexture& texture, float u, float v) {
 // A point on a triangle, normals unit and as authored (not yet turned towards any viewer).
 struct TrianglePoint {
     glm::vec3 position;
-    glm::vec3 geometricNormal;  // from the counter-clockwise winding
-    glm::vec3 shadingNormal;    // interpolated vertex normal
-    glm::vec2 uv;
-    glm::vec3 alongU;  // ∂position/∂u over the triangle (zero where its texture coordinates are degenerate)
+    glm::vec3 geometricNormal;       // from the counter-clockwise winding
+    glm::vec3 shadingNormal;         // interpolated vertex normal
+    glm::vec2 texCoord0, texCoord1;  // both sets, interpolated
+    const Vertex* corners[3];
 };
 
 TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, float b2) {
@@ -78,7 +78,8 @@ TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, f
     const float b0 = 1.0f - b1 - b2;
     TrianglePoint point;
     point.position = b0 * v0.position + b1 * v1.position + b2 * v2.position;
-    point.uv = b0 * glm::vec2(v0.u, v0.v) + b1 * glm::vec2(v1.u, v1.v) + b2 * glm::vec2(v2.u, v2.v);
+    point.texCoord0 = b0 * glm::vec2(v0.u, v0.v) + b1 * glm::vec2(v1.u, v1.v) + b2 * glm::vec2(v2.u, v2.v);
+    point.texCoord1 = b0 * v0.uv1 + b1 * v1.uv1 + b2 * v2.uv1;
     const glm::vec3 cross = glm::cross(v1.position - v0.position, v2.position - v0.position);
     const float crossLength = glm::length(cross);
     const glm::vec3 shading = b0 * v0.normal + b1 * v1.normal + b2 * v2.normal;
@@ -86,13 +87,39 @@ TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, f
     point.geometricNormal = crossLength > 0.0f ? cross / crossLength : glm::vec3(0.0f, 0.0f, 1.0f);
     point.shadingNormal =
         shadingLength > 1e-12f && std::isfinite(shadingLength) ? shading / shadingLength : point.geometricNormal;
-    const glm::vec2 uv1 = glm::vec2(v1.u, v1.v) - glm::vec2(v0.u, v0.v);
-    const glm::vec2 uv2 = glm::vec2(v2.u, v2.v) - glm::vec2(v0.u, v0.v);
-    const float determinant = uv1.x * uv2.y - uv2.x * uv1.y;
-    point.alongU = std::abs(determinant) > 1e-20f
-                       ? (uv2.y * (v1.position - v0.position) - uv1.y * (v2.position - v0.position)) / determinant
-                       : glm::vec3(0.0f);
+    point.corners[0] = &v0;
+    point.corners[1] = &v1;
+    point.corners[2] = &v2;
     return point;
+}
+
+glm::vec2 texCoordOf(const glsl::GpuTextureTransform& transform, const Vertex& vertex) {
+    return glsl::transformedTexCoord(transform, glm::vec2(vertex.u, vertex.v), vertex.uv1);
+}
+
+// ∂position/∂u over the point's triangle, u the texture's own (after `transform`); zero where the
+// triangle's texture coordinates are degenerate.
+glm::vec3 alongU(const TrianglePoint& point, const glsl::GpuTextureTransform& transform) {
+    const glm::vec3 p0 = point.corners[0]->position;
+    const glm::vec2 uv0 = texCoordOf(transform, *point.corners[0]);
+    const glm::vec2 uv1 = texCoordOf(transform, *point.corners[1]) - uv0;
+    const glm::vec2 uv2 = texCoordOf(transform, *point.corners[2]) - uv0;
+    const float determinant = uv1.x * uv2.y - uv2.x * uv1.y;
+    return std::abs(determinant) > 1e-20f
+               ? (uv2.y * (point.corners[1]->position - p0) - uv1.y * (point.corners[2]->position - p0)) / determinant
+               : glm::vec3(0.0f);
+}
+
+bool hasTexture(const PathTracer& tracer, const TextureReference& reference) {
+    return reference.index >= 0 && size_t(reference.index) < tracer.textures.size();
+}
+
+// The material texture `reference` at the point, read through `transform`; white without one.
+glm::vec3 textureAt(const PathTracer& tracer, const TextureReference& reference,
+                    const glsl::GpuTextureTransform& transform, const TrianglePoint& point) {
+    if (!hasTexture(tracer, reference)) return glm::vec3(1.0f);
+    const glm::vec2 uv = glsl::transformedTexCoord(transform, point.texCoord0, point.texCoord1);
+    return sampleTexture(tracer.textures[size_t(reference.index)], uv.x, uv.y);
 }
 
 float triangleArea(const Scene& scene, uint32_t triangle) {
@@ -102,16 +129,12 @@ float triangleArea(const Scene& scene, uint32_t triangle) {
     return 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0));
 }
 
-const Material& materialOf(const Scene& scene, uint32_t triangle) {
-    return scene.materials[scene.triangleMaterials[triangle]];
-}
-
-// The radiance a material emits at texture coordinate uv: emission × the emissive texture.
-glm::vec3 emissionAt(const PathTracer& tracer, const Material& material, const glm::vec2& uv) {
-    glm::vec3 emission = material.emission;
-    if (material.emissiveTexture >= 0 && size_t(material.emissiveTexture) < tracer.textures.size())
-        emission *= sampleTexture(tracer.textures[size_t(material.emissiveTexture)], uv.x, uv.y);
-    return emission;
+// The radiance the triangle's material emits at the point: emission × the emissive texture.
+glm::vec3 emissionAt(const PathTracer& tracer, uint32_t triangle, const TrianglePoint& point) {
+    const uint32_t material = tracer.scene->triangleMaterials[triangle];
+    return tracer.scene->materials[material].emission * textureAt(tracer,
+                                                                  tracer.scene->materials[material].emissiveTexture,
+                                                                  tracer.textureTransforms[material].emissive, point);
 }
 
 EmitterTable buildEmitterTable(const Scene& scene) {
@@ -170,32 +193,32 @@ struct SurfacePoint {
 SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::vec3& rayDirection) {
     const Scene& scene = *tracer.scene;
     const TrianglePoint point = pointOnTriangle(scene, hit.triangle, hit.b1, hit.b2);
-    const Material& material = materialOf(scene, hit.triangle);
+    const uint32_t materialIndex = scene.triangleMaterials[hit.triangle];
+    const Material& material = scene.materials[materialIndex];
+    const MaterialTextureTransforms& transforms = tracer.textureTransforms[materialIndex];
     SurfacePoint s;
     s.position = point.position;
     s.toViewer = -rayDirection;
     // The side is the interpolated normal's; a normal texture tilts the normal of that side.
     const bool frontFace = glm::dot(point.shadingNormal, s.toViewer) > 0.0f;
     glm::vec3 shadingNormal = point.shadingNormal;
-    if (material.normalTexture >= 0 && size_t(material.normalTexture) < tracer.textures.size()) {
-        const glm::vec3 texel = sampleTexture(tracer.textures[material.normalTexture], point.uv.x, point.uv.y);
-        shadingNormal = glsl::normalFromTexture(shadingNormal, point.alongU, texel, material.normalScale);
+    if (hasTexture(tracer, material.normalTexture)) {
+        const glm::vec3 texel = textureAt(tracer, material.normalTexture, transforms.normal, point);
+        shadingNormal =
+            glsl::normalFromTexture(shadingNormal, alongU(point, transforms.normal), texel, material.normalScale);
     }
     s.shadingNormal = frontFace ? shadingNormal : -shadingNormal;
     s.geometricNormal =
         glm::dot(point.geometricNormal, s.toViewer) >= 0.0f ? point.geometricNormal : -point.geometricNormal;
-    s.emission = frontFace ? emissionAt(tracer, material, point.uv) : glm::vec3(0.0f);
-    glm::vec3 baseColor = glm::vec3(material.baseColorFactor);
-    if (material.baseColorTexture >= 0 && size_t(material.baseColorTexture) < tracer.textures.size()) {
-        baseColor *= sampleTexture(tracer.textures[material.baseColorTexture], point.uv.x, point.uv.y);
-    }
+    s.emission = frontFace ? emissionAt(tracer, hit.triangle, point) : glm::vec3(0.0f);
+    const glm::vec3 baseColor =
+        glm::vec3(material.baseColorFactor) * textureAt(tracer, material.baseColorTexture, transforms.baseColor, point);
     s.material.baseColor = glm::clamp(baseColor, 0.0f, 1.0f);
-    glm::vec2 metallicRoughness(material.metallic, material.roughness);
-    if (material.metallicRoughnessTexture >= 0 && size_t(material.metallicRoughnessTexture) < tracer.textures.size()) {
-        const glm::vec3 texel =
-            sampleTexture(tracer.textures[material.metallicRoughnessTexture], point.uv.x, point.uv.y);
-        metallicRoughness *= glm::vec2(texel.b, texel.g);  // glTF: blue = metallic, green = roughness
-    }
+    // glTF: blue scales metallic, green roughness.
+    const glm::vec3 metallicRoughnessTexel =
+        textureAt(tracer, material.metallicRoughnessTexture, transforms.metallicRoughness, point);
+    const glm::vec2 metallicRoughness = glm::vec2(material.metallic, material.roughness) *
+                                        glm::vec2(metallicRoughnessTexel.b, metallicRoughnessTexel.g);
     s.material.metallic = std::clamp(metallicRoughness.x, 0.0f, 1.0f);
     s.material.roughness = std::clamp(metallicRoughness.y, 0.0f, 1.0f);
     s.material.specularWeight = std::clamp(material.specularWeight, 0.0f, 1.0f);
@@ -282,7 +305,7 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
 
     const float lightPdf = emitters.areaPdf[triangle] * distanceSquared / cosLight;
     const float weight = powerHeuristic(lightPdf, bsdfPdf(s.material, s.shadingNormal, s.toViewer, L));
-    return reflected * emissionAt(tracer, materialOf(*tracer.scene, triangle), light.uv) * (weight / lightPdf);
+    return reflected * emissionAt(tracer, triangle, light) * (weight / lightPdf);
 }
 
 // Where in its pixel sample number `sample` looks: Roberts' R2 sequence (2018, "The Unreasonable
@@ -313,6 +336,10 @@ PathTracer createPathTracer(const Scene& scene) {
     tracer.scene = &scene;
     tracer.bvh = buildBvh(scene);
     for (const Texture& texture : scene.textures) tracer.textures.push_back(decodeTexture(texture));
+    for (const Material& material : scene.materials)
+        tracer.textureTransforms.push_back(
+            {textureTransform(material.baseColorTexture), textureTransform(material.metallicRoughnessTexture),
+             textureTransform(material.normalTexture), textureTransform(material.emissiveTexture)});
     tracer.emitters = buildEmitterTable(scene);
     return tracer;
 }

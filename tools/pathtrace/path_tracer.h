@@ -9,6 +9,9 @@
 //   front face: the side the interpolated vertex normal points to.
 // - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Alpha is
 //   ignored (all surfaces are opaque). There is no environment light.
+// - Each texture is read at the texture-coordinate set its material names, through its
+//   KHR_texture_transform (shaders_glsl/texture_transform.h, as on the GPU). The occlusion texture
+//   is ignored: paths find the occlusion it stands for themselves.
 // - Punctual lights (KHR_lights_punctual, no photometric factor) are delta lights, reached only
 //   by next-event estimation. Emissive triangles are sampled by area, chosen with probability
 //   ∝ area × luminance(emission), and combined with BRDF sampling by the power heuristic.
@@ -26,6 +29,7 @@
 #include "io/image_io.h"
 #include "sampling.h"
 #include "scene/scene.h"
+#include "texture_transform.h"
 
 namespace vct::pt {
 
@@ -43,11 +47,17 @@ struct EmitterTable {
     std::vector<float> areaPdf;  // per Scene triangle: P(chosen) / area, 0 for the non-emissive
 };
 
+// Where a material's textures are read (material_textures.h's textureTransform, computed once).
+struct MaterialTextureTransforms {
+    glsl::GpuTextureTransform baseColor, metallicRoughness, normal, emissive;
+};
+
 // Everything the integrator needs; the Scene must outlive it.
 struct PathTracer {
     const Scene* scene = nullptr;
     Bvh bvh;
     std::vector<LinearTexture> textures;
+    std::vector<MaterialTextureTransforms> textureTransforms;  // one per Scene material
     EmitterTable emitters;
     // Surface interactions that gather light, as PBRT counts them: 1 = direct light only, 2 adds
     // one bounce of indirect light, N adds N − 1 bounces. The default is a safety net: Russian
