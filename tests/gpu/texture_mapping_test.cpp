@@ -62,7 +62,7 @@ protected:
         gltf.document["extensionsUsed"] = {"KHR_materials_specular", "KHR_texture_transform"};
         Scene scene = loadBuilt(gltf);
         EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
-        EXPECT_TRUE(addDefaultSunIfUnlit(scene));
+        EXPECT_TRUE(addDefaultSunAndSkyIfUnlit(scene));
         Renderer renderer(gpu(), scene, smallSettings(RenderMode::Direct));
         renderer.renderFrame();
         return renderer.readImage();
