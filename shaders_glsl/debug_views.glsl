@@ -59,7 +59,8 @@ vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
     uint view = frame.debugView;
     if (view >= DEBUG_VOXEL_ALBEDO) return voxelView(pixel, view, float(frame.debugVoxelMip));
     if (positionMaterial.w < 0.5f) return vec3(0.0f);
-    vec3 normal = texelFetch(gNormal, pixel, 0).xyz;
+    vec4 normalSide = texelFetch(gNormal, pixel, 0);
+    vec3 normal = normalSide.xyz;
     if (view == DEBUG_BASE_COLOR) return texelFetch(gBaseColor, pixel, 0).rgb;
     if (view == DEBUG_NORMAL) return normal * 0.5f + 0.5f;
     if (view == DEBUG_DEPTH) {
@@ -74,9 +75,11 @@ vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
         float distanceToCamera = length(positionMaterial.xyz - camera);
         return vec3(clamp((distanceToCamera - nearest) / max(farthest - nearest, 1e-6f), 0.0f, 1.0f));
     }
-    // Ambient occlusion: 1 = open, 0 = fully occluded.
+    // Ambient occlusion, 1 = open, 0 = fully occluded: the cones' times the material's occlusion
+    // texture, both of which scale the indirect light.
     vec3 origin = positionMaterial.xyz + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
-    return vec3(1.0f - traceDiffuseCones(origin, normal, frame.coneStartOffset).a);
+    float cones = 1.0f - traceDiffuseCones(origin, normal, frame.coneStartOffset).a;
+    return vec3(cones * gbufferOcclusion(normalSide.w));
 }
 
 #endif

@@ -190,5 +190,27 @@ TEST_F(TextureMapping, TheOcclusionTextureScalesIndirectLightAndLeavesDirectLigh
     }
 }
 
+TEST_F(TextureMapping, TheAmbientOcclusionViewShowsTheOcclusionTexture) {
+    // The AO debug view is the cones' occlusion times the texture's, what scales the indirect light:
+    // the left half's 0.626 of the right's, the cones alike on both halves (the quad is open).
+    const float leftOcclusion = 1.0f + 0.75f * (128.0f / 255.0f - 1.0f);
+    auto render = [&](bool occluded) {
+        RenderSettings settings = smallSettings(RenderMode::Full);
+        settings.shading.debugView = DebugView::AmbientOcclusion;
+        Renderer renderer(gpu(), occlusionScene(occluded), settings);
+        renderer.renderFrame();
+        return renderer.readImage();
+    };
+    const Image occluded = render(true), open = render(false);
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            if (x > 10 && x < 21) continue;
+            const float expected = x <= 10 ? leftOcclusion : 1.0f;
+            ASSERT_GT(open.pixel(x, y)[0], 0.1f) << x << "," << y;
+            EXPECT_NEAR(occluded.pixel(x, y)[0] / open.pixel(x, y)[0], expected, kRelativeTolerance) << x << "," << y;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace vct::test
