@@ -110,6 +110,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     // Every argument is checked before the scene loads and the window opens.
     checkSceneArguments(arguments);
     options.scene = loadSceneFromArguments(arguments);
+    options.environment = sceneOverridesFromArguments(arguments).environment;
     printSceneWarnings(options.scene);
     return runViewer(std::move(options));
 }

@@ -407,6 +407,21 @@ TEST_F(View, ASkyEntryInAScriptLightsTheSkyAndTheGround) {
     EXPECT_GT(meanValue(crop(blue, 0, 120, 320, 180)), meanValue(crop(black, 0, 120, 320, 180)) + 5.0) << log;
 }
 
+TEST_F(View, TheCommandLinesSkyStaysForADroppedScene) {
+    // --environment is the sky of every scene the viewer opens, as it would be for `vct render`:
+    // the terrain dropped onto the Cornell box keeps the blue sky above its hills.
+    const std::string events = std::string(hidePanels) + "1 drop terrain; 3 screenshot terrain.png; 4 quit";
+    ASSERT_EQ(runViewer("--environment 0.1,0.2,0.8 --events '" + events + "'"), 0) << log;
+    const Png sky = crop(screenshot("terrain.png"), 0, 0, 320, 12);
+    ASSERT_FALSE(sky.rgb.empty()) << log;
+    double red = 0.0, blue = 0.0;
+    for (size_t i = 0; i < sky.rgb.size(); i += 3) {
+        red += sky.rgb[i];
+        blue += sky.rgb[i + 2];
+    }
+    EXPECT_GT(blue, 2.0 * red + 20.0 * double(sky.rgb.size() / 3)) << log;
+}
+
 TEST_F(View, ALightTheRendererRefusesIsKeptAsItWasAndSaidSo) {
     // A negative intensity, or one past what the voxels' float16 holds: the window shows why, the
     // light stays as it was (the same image), and the viewer goes on.
