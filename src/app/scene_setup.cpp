@@ -22,9 +22,7 @@ SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
     if (arguments.has("light-intensity"))
         overrides.lightIntensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
     overrides.environment = arguments.vector3("environment");
-    if (overrides.environment && !(glm::all(glm::greaterThanEqual(*overrides.environment, glm::vec3(0.0f))) &&
-                                   glm::all(glm::lessThanEqual(*overrides.environment, glm::vec3(1e9f)))))
-        throw Error("--environment must be a radiance from 0 to 1e9 in each of red, green and blue");
+    if (overrides.environment) checkSkyRadiance(*overrides.environment);
     return overrides;
 }
 

@@ -3,9 +3,16 @@
 #include <cstdio>
 #include <vector>
 
+#include "error.h"
 #include "scene/material_textures.h"
 
 namespace vct {
+
+void checkSkyRadiance(glm::vec3 radiance) {
+    if (!(glm::all(glm::greaterThanEqual(radiance, glm::vec3(0.0f))) &&
+          glm::all(glm::lessThanEqual(radiance, glm::vec3(1e9f)))))
+        throw Error("--environment must be a radiance from 0 to 1e9 in each of red, green and blue");
+}
 
 bool sceneHasLight(const Scene& scene) {
     if (!scene.lights.empty()) return true;

@@ -17,6 +17,10 @@ inline constexpr const char* kDefaultSunName = "default sun";
 // a sixth of the sun's there, as on a clear day, so faces the sun does not reach are not black.
 inline constexpr glm::vec3 kDefaultSkyRadiance{0.11f, 0.14f, 0.18f};
 
+// Throws vct::Error unless `radiance` can be a sky's (0 to 1e9 in each of red, green and blue):
+// what --environment takes, in vct and in vct_pathtrace alike.
+void checkSkyRadiance(glm::vec3 radiance);
+
 // True if the scene has a light, a sky (Scene::environment not black) or a triangle that emits
 // (its emission times its emissive texture's mean is not black).
 bool sceneHasLight(const Scene& scene);

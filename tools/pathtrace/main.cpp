@@ -110,9 +110,7 @@ Options parseOptions(int argc, char** argv) {
         throw Error("the image size must be between 1 and 16384 pixels on each side");
     }
     if (s.samplesPerPixel == 0) throw Error("--spp must be at least 1");
-    if (options.environment && !(glm::all(glm::greaterThanEqual(*options.environment, glm::vec3(0.0f))) &&
-                                 glm::all(glm::lessThanEqual(*options.environment, glm::vec3(1e9f)))))
-        throw Error("--environment must be a radiance from 0 to 1e9 in each of red, green and blue");
+    if (options.environment) vct::checkSkyRadiance(*options.environment);
     if (options.fovDegrees && !(*options.fovDegrees > 0.0f && *options.fovDegrees < 180.0f)) {
         throw Error("--fov must be between 0 and 180 degrees");
     }
