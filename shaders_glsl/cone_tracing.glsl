@@ -115,9 +115,8 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
         // Stop once the footprint has left the grid (outside is transparent black): a cone that
         // stopped when its centre left would skip a wall lying in the grid's last voxels.
         if (any(lessThan(position, vec3(-0.5f * diameter))) ||
-            any(greaterThan(position, vec3(resolution + 0.5f * diameter)))) {
+            any(greaterThan(position, vec3(resolution + 0.5f * diameter))))
             break;
-        }
         vec3 uvw = position / resolution;
         float stepLength = marchStep(diameter, lod, stepFraction);
 
