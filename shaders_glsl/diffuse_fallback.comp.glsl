@@ -12,6 +12,7 @@ layout(std430, set = 0, binding = 3) readonly buffer FallbackList { WorkListHead
 layout(set = 0, binding = 6) uniform sampler2D gPosition;
 layout(set = 0, binding = 7) uniform sampler2D gNormal;
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
 
 #include "cone_tracing.glsl"

@@ -13,6 +13,7 @@ layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D gathered;
 layout(set = 0, binding = 6) uniform sampler2D gPosition;
 layout(set = 0, binding = 7) uniform sampler2D gNormal;
 layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
 
 #include "cone_tracing.glsl"

@@ -30,9 +30,14 @@ uint packSample(ivec2 sample_) { return uint(sample_.x) | (uint(sample_.y) << 16
 ivec2 unpackSample(uint packed) { return ivec2(packed & 0xffffu, packed >> 16u); }
 
 #ifdef VCT_CONE_TRACING_GLSL
+#include "cone_start.glsl"
+
 // Σ wᵢ Lᵢ of the diffuse cones (rgb) and their weighted occlusion (a) at a surface point; the
-// cones start frame.coneStartOffset voxels off the surface, clear of its own voxels.
+// cones start frame.coneStartOffset voxels off the surface, clear of its own voxels, unless
+// another surface faces back across that gap: then every cone meets it at once.
 vec4 gatherDiffuse(vec3 position, vec3 normal) {
+    vec4 across = surfaceAcrossTheGap(position, normal);
+    if (across.a > 0.0f) return across;
     vec3 origin = position + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
     return traceDiffuseCones(origin, normal, frame.coneStartOffset);
 }

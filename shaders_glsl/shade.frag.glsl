@@ -77,8 +77,10 @@ vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
         vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
         vec3 reflected = reflect(-surface.toViewer, surface.normal);
         float tanHalf = specularConeTanHalfAperture(ggxAlpha(surface.roughness));
-        radiance += specularAlbedo * traceCone(origin, reflected, tanHalf, frame.coneStartOffset,
-                                                   dot(reflected, surface.normal)).radiance;
+        vec4 across = surfaceAcrossTheGap(surface.position, surface.normal);
+        radiance += specularAlbedo * (across.a > 0.0f ? across.rgb
+                                                      : traceCone(origin, reflected, tanHalf, frame.coneStartOffset,
+                                                                  dot(reflected, surface.normal)).radiance);
     }
     return radiance;
 }

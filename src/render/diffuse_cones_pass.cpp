@@ -63,6 +63,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(6, gbuffer.position.view, point)
         .sampledImage(7, gbuffer.normal.view, point)
         .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.layout);
     vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
     finishWriting(commands, gathered, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
@@ -106,6 +107,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(6, gbuffer.position.view, point)
         .sampledImage(7, gbuffer.normal.view, point)
         .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, fallbackPipeline.layout);
     vkCmdDispatchIndirect(commands, fallbackList.buffer, 0);
     finishWriting(commands, diffuse, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
