@@ -196,9 +196,12 @@ vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
     return vec4(radiance, occlusion);
 }
 
-// The GGX lobe's width as a cone: the reflected lobe's half-width at half maximum is about
-// 1.3·α for small α (D(θh) halves at tan θh ≈ 0.64·α, and the reflection doubles the angle).
-float specularConeTanHalfAperture(float alpha) { return clamp(1.3f * alpha, 0.02f, 1.0f); }
+// The GGX lobe as one cone: the cone that holds half of the lobe's energy. GGX puts a fraction
+// tan²θh / (α² + tan²θh) of its projected area within θh of the normal, half at θh = atan α, and
+// the reflection doubles the angle: tan(half-aperture) = tan 2θh = 2α / (1 − α²). Its half-width at
+// half maximum (tan ≈ 1.3·α) was narrower, and the long tail it left out blurs the truth's
+// reflections: cornell-metal's full relMSE 0.0506 with it, 0.0488 with this.
+float specularConeTanHalfAperture(float alpha) { return clamp(2.0f * alpha / max(1.0f - alpha * alpha, 1e-4f), 0.02f, 1.0f); }
 
 // Directional albedo of the GGX lobe, (A, B) with ∫f·cosθ = F0·A + B (Karis 2014, after Lazarov 2013).
 vec2 environmentBrdf(float roughness, float NdotV) {
