@@ -30,24 +30,33 @@ layout(location = 3) out vec4 outEmissive;   // linear rgb of the emissive textu
 // Where a texture is read: its set of texture coordinates through its transform.
 vec2 uvOf(GpuTextureTransform transform) { return transformedTexCoord(transform, texCoords.xy, texCoords.zw); }
 
+// A material texture, filtered over the pixel's footprint (trilinear, through the mip chain). The
+// footprint comes from the derivatives of the interpolated coordinate sets, through the transform:
+// lavapipe's implicit derivatives of a computed value went wrong along the triangles' edges, where
+// they would pick too coarse a level.
+vec4 materialTexture(int index, GpuTextureTransform transform) {
+    return textureGrad(colorTextures[index], uvOf(transform), transformedTexCoordDerivative(transform, dFdx(texCoords)),
+                       transformedTexCoordDerivative(transform, dFdy(texCoords)));
+}
+
 void main() {
     GpuMaterial material = materials[materialIndex];
     vec4 baseColor = material.baseColorFactor;
     if (material.baseColorTexture >= 0)
-        baseColor *= texture(colorTextures[material.baseColorTexture], uvOf(material.baseColorTransform));
+        baseColor *= materialTexture(material.baseColorTexture, material.baseColorTransform);
     vec3 emissive = vec3(1.0f);
     if (material.emissiveTexture >= 0)
-        emissive = texture(colorTextures[material.emissiveTexture], uvOf(material.emissiveTransform)).rgb;
+        emissive = materialTexture(material.emissiveTexture, material.emissiveTransform).rgb;
     vec2 metallicRoughness = vec2(material.metallic, material.roughness);
     if (material.metallicRoughnessTexture >= 0)
         metallicRoughness *=
-            texture(colorTextures[material.metallicRoughnessTexture], uvOf(material.metallicRoughnessTransform)).bg;
+            materialTexture(material.metallicRoughnessTexture, material.metallicRoughnessTransform).bg;
     metallicRoughness = clamp(metallicRoughness, 0.0f, 1.0f);
     // glTF 2.0 §3.9.3: the occlusion texture's red channel, blended towards 1 by 1 − strength,
     // scales the indirect light only.
     float occlusion = 1.0f;
     if (material.occlusionTexture >= 0) {
-        float red = texture(colorTextures[material.occlusionTexture], uvOf(material.occlusionTransform)).r;
+        float red = materialTexture(material.occlusionTexture, material.occlusionTransform).r;
         occlusion = clamp(1.0f + material.occlusionStrength * (red - 1.0f), 0.0f, 1.0f);
     }
 
@@ -75,7 +84,7 @@ void main() {
         float determinant = uvX.x * uvY.y - uvY.x * uvX.y;
         if (abs(determinant) > 1e-20f) {
             vec3 alongU = (uvY.y * dFdx(worldPosition) - uvX.y * dFdy(worldPosition)) / determinant;
-            vec3 texel = texture(colorTextures[material.normalTexture], uvOf(transform)).rgb;
+            vec3 texel = materialTexture(material.normalTexture, transform).rgb;
             normal = normalFromTexture(normal, alongU, texel, material.normalScale);
         }
     }

@@ -11,6 +11,7 @@
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "gpu_types.h"
+#include "render/texture_upload.h"
 #include "scene/material_textures.h"
 #include "scene/scene_limits.h"
 
@@ -25,33 +26,6 @@ Buffer uploadArray(GpuContext& context, const std::vector<T>& values, VkBufferUs
     std::vector<T> padded = values;
     if (padded.empty()) padded.resize(1);
     return uploadBuffer(context, padded.data(), padded.size() * sizeof(T), usage);
-}
-
-GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, const uint8_t* rgba8, bool srgb) {
-    ImageDesc desc;
-    // glTF's colour textures (base colour, emission) are sRGB-encoded, its data textures linear.
-    desc.format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
-    desc.extent = {width, height, 1};
-    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    desc.debugName = srgb ? "colour texture" : "data texture";
-    GpuImage image(context, desc);
-    const VkDeviceSize size = VkDeviceSize(width) * height * 4;
-    Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-    std::memcpy(staging.mapped, rgba8, size);
-    submitAndWait(context, [&](VkCommandBuffer commands) {
-        imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {width, height, 1};
-        vkCmdCopyBufferToImage(commands, staging.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    });
-    return image;
 }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }

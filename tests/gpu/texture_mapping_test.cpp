@@ -1,6 +1,8 @@
 // Where the camera sees material textures read: the texture-coordinate set each textureInfo names,
 // through KHR_texture_transform; and the occlusion texture, which scales indirect light only.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "../cpu/gltf_test_helpers.h"
 #include "gpu_test.h"
@@ -159,6 +161,33 @@ Scene occlusionScene(bool occluded) {
     sun.intensity = kDefaultSunIlluminance;
     scene.lights.push_back(sun);
     return scene;
+}
+
+TEST_F(TextureMapping, AMinifiedCheckerboardIsItsMeanInEveryPixel) {
+    // A checkerboard of single black and white texels, 256 a side, about 4.3 texels to a pixel:
+    // through the mip chain every pixel averages its footprint, 0.5 in linear light. A single level
+    // gave each pixel the few texels around its centre (black, white or between: aliasing), and
+    // averaging the sRGB codes instead of the light (a blit that did not linearize) gives 0.21.
+    constexpr uint32_t kTexels = 256;
+    std::vector<uint16_t> rgba;
+    for (uint32_t y = 0; y < kTexels; ++y)
+        for (uint32_t x = 0; x < kTexels; ++x) {
+            const uint16_t value = (x + y) % 2 ? 255 : 0;
+            rgba.insert(rgba.end(), {value, value, value, 255});
+        }
+    GltfBuilder gltf = quadFacingCamera();
+    gltf.document["images"] = json::array({{{"uri", pngUri(kTexels, kTexels, rgba)}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    const Image image = renderLitQuad(gltf, {{"index", 0}});
+    float lowest = 1e9f, highest = 0.0f;
+    for (uint32_t y = 0; y < kSize; ++y)
+        for (uint32_t x = 0; x < kSize; ++x) {
+            lowest = std::min(lowest, image.pixel(x, y)[0]);
+            highest = std::max(highest, image.pixel(x, y)[0]);
+        }
+    std::printf("[ mips ] checkerboard: pixels %.4f-%.4f of a mean %.4f\n", lowest, highest, 0.5f * lambertian());
+    EXPECT_NEAR(lowest, 0.5f * lambertian(), 0.05f * lambertian());
+    EXPECT_NEAR(highest, 0.5f * lambertian(), 0.05f * lambertian());
 }
 
 TEST_F(TextureMapping, TheOcclusionTextureScalesIndirectLightAndLeavesDirectLightAlone) {
