@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <numeric>
 #include <string>
+#include <tuple>
 
 #include "error.h"
 #include "gpu/commands.h"
@@ -26,6 +28,15 @@ Buffer uploadArray(GpuContext& context, const std::vector<T>& values, VkBufferUs
     std::vector<T> padded = values;
     if (padded.empty()) padded.resize(1);
     return uploadBuffer(context, padded.data(), padded.size() * sizeof(T), usage);
+}
+
+VkSamplerAddressMode addressMode(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        case TextureWrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case TextureWrap::Repeat: break;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
 }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -147,15 +158,28 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
     }
     materials = uploadArray(context, gpuMaterials, storage);
 
-    for (const Texture& texture : scene.textures)
+    // One sampler per kind of glTF sampler the textures use (they are few: wrap modes × filters).
+    std::map<std::tuple<TextureWrap, TextureWrap, bool>, VkSampler> samplerOf;
+    std::vector<VkSampler> textureSamplers;
+    const auto samplerFor = [&](TextureWrap wrapS, TextureWrap wrapT, bool nearestMagnification) {
+        const auto key = std::tuple{wrapS, wrapT, nearestMagnification};
+        if (const auto known = samplerOf.find(key); known != samplerOf.end()) return known->second;
+        VkSamplerCreateInfo info = linearClampSampler();  // trilinear through the mip chain
+        info.addressModeU = addressMode(wrapS);
+        info.addressModeV = addressMode(wrapT);
+        if (nearestMagnification) info.magFilter = VK_FILTER_NEAREST;
+        samplers.emplace_back(context, info);
+        return samplerOf[key] = samplers.back().sampler;
+    };
+    for (const Texture& texture : scene.textures) {
         textures.push_back(uploadTexture(context, texture.width, texture.height, texture.rgba8.data(), texture.srgb));
+        textureSamplers.push_back(samplerFor(texture.wrapS, texture.wrapT, texture.nearestMagnification));
+    }
     if (textures.empty()) {
         const uint8_t white[4] = {255, 255, 255, 255};
         textures.push_back(uploadTexture(context, 1, 1, white, true));
+        textureSamplers.push_back(samplerFor(TextureWrap::Repeat, TextureWrap::Repeat, false));
     }
-    VkSamplerCreateInfo samplerInfo = linearClampSampler();
-    samplerInfo.addressModeU = samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;  // glTF's default wrap
-    textureSampler = Sampler(context, samplerInfo);
 
     // The texture array changes size with the scene, so it lives in a classic descriptor set.
     VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount(),
@@ -176,8 +200,8 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
     allocateInfo.pSetLayouts = &textureSetLayout;
     VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, &textureSet));
     std::vector<VkDescriptorImageInfo> imageInfos;
-    for (const GpuImage& texture : textures)
-        imageInfos.push_back({textureSampler.sampler, texture.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+    for (size_t i = 0; i < textures.size(); ++i)
+        imageInfos.push_back({textureSamplers[i], textures[i].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = textureSet;
     write.descriptorCount = textureCount();

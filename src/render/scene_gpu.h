@@ -41,7 +41,7 @@ struct SceneGpu {
     // Colour textures, base colour and emissive (at least one: a white fallback), in descriptor set 1
     // of the G-buffer pass.
     std::vector<GpuImage> textures;
-    Sampler textureSampler;
+    std::vector<Sampler> samplers;  // one per kind of glTF sampler the textures use (wrap, filter)
     VkDescriptorSetLayout textureSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool texturePool = VK_NULL_HANDLE;
     VkDescriptorSet textureSet = VK_NULL_HANDLE;

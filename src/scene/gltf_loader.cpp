@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include <tiny_gltf.h>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -332,7 +333,8 @@ struct Converter {
     const std::map<int, int>& sameImageAs;
     const LoadOptions& options;
     Scene& scene;
-    std::map<std::pair<int, bool>, int> sceneTextureOfImage;  // (glTF image, sRGB) → Scene::textures index or -1
+    // (glTF image, sRGB, sampler's wrapS, wrapT, nearest magnification) → Scene::textures index or -1
+    std::map<std::tuple<int, bool, TextureWrap, TextureWrap, bool>, int> sceneTextureOfImage;
     int defaultMaterial = -1;
     std::set<uint32_t> warnedNoTexCoord1;  // materials named in a "has no TEXCOORD_1" warning
 
@@ -401,15 +403,34 @@ struct Converter {
         }
     }
 
+    // A glTF sampler's wrap mode (an unknown value, already warned about by validation, repeats).
+    static TextureWrap textureWrap(int glWrap) {
+        return glWrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::ClampToEdge
+               : glWrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::MirroredRepeat
+                                                                 : TextureWrap::Repeat;
+    }
+
     // The Scene texture of a glTF texture, decoded once per image and use (sRGB colour or linear
-    // data); -1 if there is none or its image could not be read (`fallback` says what is used instead).
+    // data) and sampler; -1 if there is none or its image could not be read (`fallback` says what is
+    // used instead). Without a sampler a texture repeats and is filtered linearly (glTF 2.0 §5.26).
+    // minFilter is not read: every texture is minified trilinearly through its mip chain.
     int sceneTexture(const std::string& materialPath, int textureIndex, const std::string& fallback, bool srgb) {
         if (textureIndex < 0) return -1;
-        const int source = model.textures[size_t(textureIndex)].source;
+        const tinygltf::Texture& gltfTexture = model.textures[size_t(textureIndex)];
+        const int source = gltfTexture.source;
         if (source < 0) return -1;
+        TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+        bool nearestMagnification = false;
+        if (gltfTexture.sampler >= 0 && size_t(gltfTexture.sampler) < model.samplers.size()) {
+            const tinygltf::Sampler& sampler = model.samplers[size_t(gltfTexture.sampler)];
+            wrapS = textureWrap(sampler.wrapS);
+            wrapT = textureWrap(sampler.wrapT);
+            nearestMagnification = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+        }
         const auto same = sameImageAs.find(source);
         const int imageIndex = same != sameImageAs.end() ? same->second : source;  // decoded once, shared
-        const auto known = sceneTextureOfImage.find({imageIndex, srgb});
+        const auto key = std::tuple{imageIndex, srgb, wrapS, wrapT, nearestMagnification};
+        const auto known = sceneTextureOfImage.find(key);
         if (known != sceneTextureOfImage.end()) return known->second;
 
         const tinygltf::Image& image = model.images[size_t(imageIndex)];
@@ -427,10 +448,13 @@ struct Converter {
             texture.height = uint32_t(image.height);
             texture.rgba8 = image.image;
             texture.srgb = srgb;
+            texture.wrapS = wrapS;
+            texture.wrapT = wrapT;
+            texture.nearestMagnification = nearestMagnification;
             index = int(scene.textures.size());
             scene.textures.push_back(std::move(texture));
         }
-        sceneTextureOfImage[{imageIndex, srgb}] = index;
+        sceneTextureOfImage[key] = index;
         return index;
     }
 

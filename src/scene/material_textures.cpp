@@ -31,6 +31,22 @@ glm::vec3 meanLinearColor(const Texture& texture) {
     return glm::vec3(sum / double(texels));
 }
 
+uint32_t wrapTexel(double texel, uint32_t size, TextureWrap wrap) {
+    if (!std::isfinite(texel) || size == 0) return 0;
+    const int64_t n = int64_t(size);
+    // Past ±2^52 a double holds no fraction anyway, and the wrapped result is as arbitrary.
+    const int64_t i = int64_t(std::clamp(texel, -0x1p52, 0x1p52));
+    switch (wrap) {
+        case TextureWrap::ClampToEdge: return uint32_t(std::clamp<int64_t>(i, 0, n - 1));
+        case TextureWrap::MirroredRepeat: {
+            const int64_t m = ((i % (2 * n)) + 2 * n) % (2 * n);  // the period is there and back
+            return uint32_t(m < n ? m : 2 * n - 1 - m);
+        }
+        case TextureWrap::Repeat: break;
+    }
+    return uint32_t(((i % n) + n) % n);
+}
+
 glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv[3]) {
     const size_t texels = size_t(texture.width) * texture.height;
     if (texels == 0 || texture.rgba8.size() < texels * 4) return glm::vec3(1.0f);
@@ -40,9 +56,9 @@ glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv
     const float wanted = std::ceil(std::sqrt(4.0f * texelArea));  // n² sub-triangles ≈ 2 per texel
     const int n = std::isfinite(wanted) ? std::clamp(int(wanted), 1, 64) : 64;
     auto texel = [&](glm::vec2 at) {
-        const glm::vec2 wrapped = at - glm::floor(at);  // REPEAT, the glTF default
-        const uint32_t x = std::min(uint32_t(wrapped.x * size.x), texture.width - 1);
-        const uint32_t y = std::min(uint32_t(wrapped.y * size.y), texture.height - 1);
+        const glm::vec2 texelAt = glm::floor(at * size);
+        const uint32_t x = wrapTexel(texelAt.x, texture.width, texture.wrapS);
+        const uint32_t y = wrapTexel(texelAt.y, texture.height, texture.wrapT);
         const uint8_t* rgba = &texture.rgba8[4 * (size_t(y) * texture.width + x)];
         return glm::dvec3(srgbToLinear(rgba[0] / 255.0f), srgbToLinear(rgba[1] / 255.0f),
                           srgbToLinear(rgba[2] / 255.0f));

@@ -14,6 +14,10 @@ glsl::GpuTextureTransform textureTransform(const TextureReference& reference);
 // The coordinates at which `vertex` reads the texture of `reference`.
 glm::vec2 textureCoordinates(const TextureReference& reference, const Vertex& vertex);
 
+// The texel of a row or column of `size` texels at whole texel index `texel` (floored, any value;
+// not finite reads texel 0), wrapped as `wrap` says.
+uint32_t wrapTexel(double texel, uint32_t size, TextureWrap wrap);
+
 // The sRGB decoding function (IEC 61966-2-1).
 float srgbToLinear(float encoded);
 
@@ -21,7 +25,7 @@ float srgbToLinear(float encoded);
 glm::vec3 meanLinearColor(const Texture& texture);
 
 // The mean of the texture's sRGB-decoded RGB over the triangle with corners uv[0..2] (texture
-// coordinates, repeating), sampled at the centroids of a regular subdivision of the triangle fine
+// coordinates, wrapped as the texture says), sampled at the centroids of a regular subdivision of the triangle fine
 // enough for about two samples per texel it covers (at most 64 × 64 sub-triangles); white for an
 // empty texture.
 glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv[3]);

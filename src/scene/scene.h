@@ -63,14 +63,21 @@ struct Material {
     bool doubleSided = false;
 };
 
+// How texture coordinates outside [0, 1] read a texture (glTF sampler wrapS / wrapT).
+enum class TextureWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+
 // An 8-bit RGBA image: sRGB-encoded colour (base colour, emission) or linear data (metallic and
-// roughness, normals), as glTF stores each. An image a file uses both ways is two textures.
+// roughness, normals), as glTF stores each, with its glTF sampler's wrapping and magnification.
+// An image a file uses both ways, or through two different samplers, is two textures.
 struct Texture {
     std::string name;  // the URI or a description, for messages
     uint32_t width = 0;
     uint32_t height = 0;
     std::vector<uint8_t> rgba8;
     bool srgb = true;
+    TextureWrap wrapS = TextureWrap::Repeat;  // along u
+    TextureWrap wrapT = TextureWrap::Repeat;  // along v
+    bool nearestMagnification = false;        // magFilter NEAREST: texels stay square up close
 };
 
 enum class LightType : uint32_t { Directional = 0, Point = 1, Spot = 2 };

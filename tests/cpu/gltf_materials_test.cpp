@@ -59,6 +59,42 @@ TEST(EmissiveTexture, AnImageThatCannotBeReadFallsBackToTheFactorWithAWarning) {
     EXPECT_NE(scene.warnings[0].find("falls back to its emissive factor"), std::string::npos) << scene.warnings[0];
 }
 
+TEST(TextureSampler, WrapModesAndMagnificationReachTheTextureAndSplitAnImageUsedThroughTwo) {
+    // The emissive texture clamps along u and mirrors along v, magnified nearest; the base colour
+    // reads the same image through no sampler: repeat both ways, linear.
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["samplers"] = json::array({{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}}});
+    gltf.document["textures"] = json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 0}}});
+    gltf.document["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 1}}}};
+    const Scene scene = loadBuilt(gltf);
+    ASSERT_EQ(scene.textures.size(), 2u);
+    const Texture& emissive = scene.textures[size_t(scene.materials[0].emissiveTexture.index)];
+    const Texture& baseColor = scene.textures[size_t(scene.materials[0].baseColorTexture.index)];
+    EXPECT_EQ(emissive.wrapS, TextureWrap::ClampToEdge);
+    EXPECT_EQ(emissive.wrapT, TextureWrap::MirroredRepeat);
+    EXPECT_TRUE(emissive.nearestMagnification);
+    EXPECT_EQ(baseColor.wrapS, TextureWrap::Repeat);
+    EXPECT_EQ(baseColor.wrapT, TextureWrap::Repeat);
+    EXPECT_FALSE(baseColor.nearestMagnification);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
+TEST(TextureSampler, WrapTexelRepeatsClampsAndMirrors) {
+    // Four texels: 0 1 2 3 | repeat 0 1 2 3, clamp 3 3 3 3, mirror 3 2 1 0; and before texel 0.
+    const uint32_t repeat[] = {0, 1, 2, 3, 0, 1}, clamp[] = {0, 1, 2, 3, 3, 3}, mirror[] = {0, 1, 2, 3, 3, 2};
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(wrapTexel(i, 4, TextureWrap::Repeat), repeat[i]) << i;
+        EXPECT_EQ(wrapTexel(i, 4, TextureWrap::ClampToEdge), clamp[i]) << i;
+        EXPECT_EQ(wrapTexel(i, 4, TextureWrap::MirroredRepeat), mirror[i]) << i;
+    }
+    EXPECT_EQ(wrapTexel(-1, 4, TextureWrap::Repeat), 3u);
+    EXPECT_EQ(wrapTexel(-1, 4, TextureWrap::ClampToEdge), 0u);
+    EXPECT_EQ(wrapTexel(-1, 4, TextureWrap::MirroredRepeat), 0u);
+    EXPECT_EQ(wrapTexel(-5, 4, TextureWrap::MirroredRepeat), 3u);
+    EXPECT_EQ(wrapTexel(1e300, 4, TextureWrap::Repeat), 0u);  // far out: some texel, no overflow
+    EXPECT_EQ(wrapTexel(std::nan(""), 4, TextureWrap::MirroredRepeat), 0u);
+}
+
 TEST(MetallicRoughnessTexture, IsDecodedAsLinearDataBesideTheSameImageAsColour) {
     // One image used as the emissive (sRGB) and the metallic-roughness (linear) texture: two scene
     // textures, each with its own encoding, both holding the image's bytes as they are.

@@ -190,6 +190,39 @@ TEST_F(TextureMapping, AMinifiedCheckerboardIsItsMeanInEveryPixel) {
     EXPECT_NEAR(highest, 0.5f * lambertian(), 0.05f * lambertian());
 }
 
+TEST_F(TextureMapping, EachWrapModeReadsOutsideTheTextureAsGltfSays) {
+    // The 8-texel texture black on its left half, read at u' = 3u − 1.5 (KHR_texture_transform):
+    // the quad's visible u ∈ [0.23, 0.77] reads u' ∈ [−0.80, 0.80], half of it outside the texture,
+    // where the sampler's wrapS decides: repeat takes u' − ⌊u'⌋, clamp-to-edge the first texel
+    // (black), mirrored repeat |u'|. Pixels within half a texel and a pixel of a change are skipped.
+    const std::pair<int, float (*)(float)> modes[] = {
+        {10497, [](float t) { return t - std::floor(t); }},
+        {33071, [](float t) { return std::clamp(t, 0.0f, 1.0f); }},
+        {33648, [](float t) { return std::abs(t); }},
+    };
+    for (const auto& [glWrap, wrapped] : modes) {
+        GltfBuilder gltf = quadFacingCamera();
+        gltf.document["images"] = json::array({{{"uri", halfBlackHalfWhitePngUri(8)}}});
+        gltf.document["samplers"] = json::array({{{"wrapS", glWrap}}});
+        gltf.document["textures"] = json::array({{{"source", 0}, {"sampler", 0}}});
+        const json transform = {{"offset", {-1.5, 0.0}}, {"scale", {3.0, 1.0}}};
+        const Image image = renderLitQuad(gltf, {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}});
+        uint32_t checked = 0;
+        for (uint32_t y = 0; y < kSize; ++y)
+            for (uint32_t x = 0; x < kSize; ++x) {
+                const float t = 3.0f * quadTexCoordAtPixel(x, y).x - 1.5f;
+                const float margin = 1.0f / 16.0f + 3.0f * 0.536f / float(kSize);  // half a texel + a pixel
+                const bool white = wrapped(t) > 0.5f;
+                if ((wrapped(t - margin) > 0.5f) != white || (wrapped(t + margin) > 0.5f) != white) continue;
+                const float expected = white ? lambertian() : 0.0f;
+                EXPECT_NEAR(image.pixel(x, y)[0], expected, kRelativeTolerance * lambertian())
+                    << "wrapS " << glWrap << " at " << x << "," << y << " (u' " << t << ")";
+                ++checked;
+            }
+        EXPECT_GT(checked, kSize * kSize / 3) << glWrap;
+    }
+}
+
 TEST_F(TextureMapping, TheOcclusionTextureScalesIndirectLightAndLeavesDirectLightAlone) {
     // glTF: occlusion = 1 + strength·(red − 1), read linearly: 1 + 0.75·(128/255 − 1) = 0.626 on the
     // left half (0.41 if it were read as sRGB, 0.50 without the strength), 1 on the right.

@@ -39,6 +39,9 @@ LinearTexture decodeTexture(const Texture& texture) {
     for (int i = 0; i < 256; ++i) table[i] = texture.srgb ? srgbToLinear(float(i) / 255.0f) : float(i) / 255.0f;
     linear.width = texture.width;
     linear.height = texture.height;
+    linear.wrapS = texture.wrapS;
+    linear.wrapT = texture.wrapT;
+    linear.nearestMagnification = texture.nearestMagnification;
     linear.texels.resize(size_t(texture.width) * texture.height);
     for (size_t i = 0; i < linear.texels.size(); ++i) {
         const uint8_t* texel = &texture.rgba8[4 * i];
@@ -47,19 +50,21 @@ LinearTexture decodeTexture(const Texture& texture) {
     return linear;
 }
 
-// Bilinear filtering with repeat wrap (the glTF default sampler); uv (0, 0) is the image's
-// top-left corner and texel centres lie at (i + ½) / size.
+// Bilinear filtering (nearest where the sampler magnifies so), wrapped as the texture's sampler
+// says; uv (0, 0) is the image's top-left corner and texel centres lie at (i + ½) / size. Many
+// paths average over each pixel, so no mip level is needed: the pixel's mean is the filtered one.
 glm::vec3 sampleTexture(const LinearTexture& texture, float u, float v) {
     if (!std::isfinite(u) || !std::isfinite(v)) return texture.texels[0];
-    const float x = (u - std::floor(u)) * float(texture.width) - 0.5f;
-    const float y = (v - std::floor(v)) * float(texture.height) - 0.5f;
-    const float x0 = std::floor(x), y0 = std::floor(y);
-    const float tx = x - x0, ty = y - y0;
-    auto wrap = [](float i, uint32_t size) { return uint32_t((int64_t(i) + int64_t(size)) % int64_t(size)); };
-    const uint32_t ix0 = wrap(x0, texture.width), ix1 = wrap(x0 + 1.0f, texture.width);
-    const uint32_t iy0 = wrap(y0, texture.height), iy1 = wrap(y0 + 1.0f, texture.height);
-    auto at = [&](uint32_t ix, uint32_t iy) { return texture.texels[size_t(iy) * texture.width + ix]; };
-    return glm::mix(glm::mix(at(ix0, iy0), at(ix1, iy0), tx), glm::mix(at(ix0, iy1), at(ix1, iy1), tx), ty);
+    auto at = [&](double ix, double iy) {
+        return texture.texels[size_t(wrapTexel(iy, texture.height, texture.wrapT)) * texture.width +
+                              wrapTexel(ix, texture.width, texture.wrapS)];
+    };
+    const double x = double(u) * texture.width, y = double(v) * texture.height;
+    if (texture.nearestMagnification) return at(std::floor(x), std::floor(y));
+    const double x0 = std::floor(x - 0.5), y0 = std::floor(y - 0.5);
+    const float tx = float(x - 0.5 - x0), ty = float(y - 0.5 - y0);
+    return glm::mix(glm::mix(at(x0, y0), at(x0 + 1.0, y0), tx), glm::mix(at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0), tx),
+                    ty);
 }
 
 // A point on a triangle, normals unit and as authored (not yet turned towards any viewer).

@@ -38,6 +38,8 @@ enum class Component { Full, Direct, Indirect };
 struct LinearTexture {
     uint32_t width = 0, height = 0;
     std::vector<glm::vec3> texels;  // linear RGB, top row first
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    bool nearestMagnification = false;
 };
 
 // Emissive triangles and the distribution they are sampled with.
