@@ -55,10 +55,15 @@ ComparisonReport measureComparison(GpuContext& context, const References* refere
     report.height = settings.image.height;
     report.frames = options.frames;
     {
-        Renderer renderer(context, scene, settings);
-        // Settle the light first, so the frames measured are those of a running viewer.
-        for (uint32_t i = 0; i < 1 + options.warmupFrames || (renderer.settling() && i < kMaxBouncesPerFrame); ++i)
-            renderer.renderFrame();
+        // Converge the light first, all bounces in the first frame, then run as the viewer does (one
+        // bounce a frame): the camera's frames are those of a viewer whose light has settled. Settling
+        // progressively, a slice of a bounce a frame, takes a 128³ grid hundreds of frames, and the
+        // frames measured before it ended re-injected the light and rebuilt the mips each time.
+        RenderSettings converging = settings;
+        converging.shading.progressiveBounces = false;
+        Renderer renderer(context, scene, converging);
+        for (uint32_t i = 0; i < 1 + options.warmupFrames; ++i) renderer.renderFrame();
+        renderer.setShading(settings.shading);
         const glm::vec3 target = 0.5f * (scene.bounds().min + scene.bounds().max);
         std::vector<FrameStats> frames;
         for (uint32_t i = 0; i < options.frames; ++i) {
