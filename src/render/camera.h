@@ -3,6 +3,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/default_camera.h"
 #include "scene/scene.h"
 
 namespace vct {
@@ -19,11 +20,5 @@ glm::mat4 lookAlong(glm::vec3 eye, glm::vec3 forward, glm::vec3 up);
 // The camera's matrices for an image of the given aspect ratio. Near and far are the camera's
 // own when it has them; an infinite glTF far plane is fitted to the scene bounds.
 ViewProjection cameraMatrices(const Camera& camera, float aspect, const Bounds& sceneBounds);
-
-// A camera that frames the whole scene, for scenes that bring none.
-Camera defaultCamera(const Bounds& sceneBounds);
-
-// Points the camera from `position` at `target`.
-void aimCamera(Camera& camera, glm::vec3 position, glm::vec3 target);
 
 }  // namespace vct

@@ -10,6 +10,7 @@
 #include "io/image_io.h"
 #include "io/json_text.h"
 #include "path_tracer.h"
+#include "scene/default_camera.h"
 #include "scene/default_light.h"
 #include "scene/load.h"
 
@@ -117,12 +118,10 @@ Options parseOptions(int argc, char** argv) {
     return options;
 }
 
-// The scene's first camera with the command line's overrides.
+// The scene's first camera, or the one vct render frames a scene without cameras from, with the
+// command line's overrides.
 vct::Camera chooseCamera(const vct::Scene& scene, const Options& options) {
-    if (scene.cameras.empty() && !(options.cameraPosition && options.cameraTarget)) {
-        throw Error("scene '" + scene.name + "' has no camera; give --camera-pos and --camera-target");
-    }
-    vct::Camera camera = scene.cameras.empty() ? vct::Camera{} : scene.cameras[0];
+    vct::Camera camera = scene.cameras.empty() ? vct::defaultCamera(scene.bounds()) : scene.cameras[0];
     if (options.cameraPosition) camera.position = *options.cameraPosition;
     if (options.cameraTarget) {
         if (glm::length(*options.cameraTarget - camera.position) <= 0.0f) {
