@@ -201,7 +201,10 @@ vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
 // the reflection doubles the angle: tan(half-aperture) = tan 2θh = 2α / (1 − α²). Its half-width at
 // half maximum (tan ≈ 1.3·α) was narrower, and the long tail it left out blurs the truth's
 // reflections: cornell-metal's full relMSE 0.0506 with it, 0.0488 with this.
-float specularConeTanHalfAperture(float alpha) { return clamp(2.0f * alpha / max(1.0f - alpha * alpha, 1e-4f), 0.02f, 1.0f); }
+const float MAX_SPECULAR_CONE_TAN = 1.0f;  // a 90° cone: wider lobes are traced as wide as this
+float specularConeTanHalfAperture(float alpha) {
+    return clamp(2.0f * alpha / max(1.0f - alpha * alpha, 1e-4f), 0.02f, MAX_SPECULAR_CONE_TAN);
+}
 
 // Directional albedo of the GGX lobe, (A, B) with ∫f·cosθ = F0·A + B (Karis 2014, after Lazarov 2013).
 vec2 environmentBrdf(float roughness, float NdotV) {

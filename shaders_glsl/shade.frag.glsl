@@ -65,18 +65,25 @@ vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
     vec3 diffuseAlbedo = (1.0f - surface.metallic) * surface.baseColor * (1.0f - dielectricSpecular);
 
     vec3 radiance = vec3(0.0f);
+    bool reflects = wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f;
+    float tanHalf = specularConeTanHalfAperture(ggxAlpha(surface.roughness));
+    // A lobe at least as wide as the widest specular cone (roughness ≥ 0.64) takes the light the
+    // diffuse cones gathered, already at hand, instead of one 90° cone of its own: six cones
+    // estimate so wide a lobe better (FlightHelmet, 128², against the path tracer: full relMSE
+    // 0.182 -> 0.167), and its pixels trace nothing more.
+    bool reflectsDiffuseLight = reflects && (wantDiffuse || wantAmbient) && tanHalf >= MAX_SPECULAR_CONE_TAN;
     if (wantDiffuse || wantAmbient) {
         vec4 gathered = TRACES_DIFFUSE_CONES ? gatherDiffuse(surface.position, surface.normal)
                                              : texelFetch(reducedDiffuse, pixel, 0);
         if (wantDiffuse) radiance += diffuseAlbedo * gathered.rgb;  // albedo/π · (π Σ wᵢ Lᵢ)
         if (wantAmbient) radiance += frame.ambientFactor * diffuseAlbedo * (1.0f - gathered.a);
+        if (reflectsDiffuseLight) radiance += specularAlbedo * gathered.rgb;
     }
     // Skip the specular cone where the material reflects (almost) nothing specularly.
-    if (TRACES_SPECULAR_CONE && wantSpecular && max(specularAlbedo.r, max(specularAlbedo.g, specularAlbedo.b)) > 1e-3f) {
+    if (TRACES_SPECULAR_CONE && reflects && !reflectsDiffuseLight) {
         // Like the diffuse cones, it starts a little off the surface, clear of its own voxels.
         vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
         vec3 reflected = reflect(-surface.toViewer, surface.normal);
-        float tanHalf = specularConeTanHalfAperture(ggxAlpha(surface.roughness));
         vec4 across = surfaceAcrossTheGap(surface.position, surface.normal);
         radiance += specularAlbedo * (across.a > 0.0f ? across.rgb
                                                       : traceCone(origin, reflected, tanHalf, frame.coneStartOffset,
