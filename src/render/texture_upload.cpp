@@ -24,9 +24,10 @@ void toLayout(VkCommandBuffer commands, const GpuImage& image, uint32_t level, u
                  level, levels);
 }
 
-}  // namespace
-
+// The levels of a full mip chain down to 1×1: ⌊log2 max(width, height)⌋ + 1.
 uint32_t fullMipCount(uint32_t width, uint32_t height) { return std::bit_width(std::max({width, height, 1u})); }
+
+}  // namespace
 
 GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, const uint8_t* rgba8, bool srgb) {
     ImageDesc desc;

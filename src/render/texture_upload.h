@@ -7,9 +7,6 @@
 
 namespace vct {
 
-// The levels of a full mip chain down to 1×1: ⌊log2 max(width, height)⌋ + 1.
-uint32_t fullMipCount(uint32_t width, uint32_t height);
-
 // Uploads `rgba8` (width × height, rows top to bottom) and filters each level from the one above
 // by a linear blit, which averages an sRGB texture's colours in linear space. Where the device
 // cannot blit the format linearly, the texture keeps its single level (sampled as before). Leaves
