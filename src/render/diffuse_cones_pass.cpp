@@ -1,12 +1,14 @@
 #include "render/diffuse_cones_pass.h"
 
+#include <array>
+
 #include "gpu/commands.h"
 #include "work_list.h"
 
 namespace vct {
 namespace {
 
-GpuImage diffuseImage(GpuContext& context, uint32_t width, uint32_t height, const char* name) {
+GpuImage image(GpuContext& context, uint32_t width, uint32_t height, const char* name) {
     ImageDesc desc;
     desc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
     desc.extent = {width, height, 1};
@@ -28,89 +30,182 @@ void finishWriting(VkCommandBuffer commands, const GpuImage& image, VkPipelineSt
                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, readers, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
-}  // namespace
-
-DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, uint32_t samplesHigh, uint32_t downscale)
-    : context_(context) {
-    gathered = diffuseImage(context, (samplesWide + downscale - 1) / downscale,
-                            (samplesHigh + downscale - 1) / downscale, "reduced diffuse cones");
-    diffuse = diffuseImage(context, samplesWide, samplesHigh, "diffuse cones per sample");
-    fallbackSamples = Buffer(context, VkDeviceSize(samplesWide) * samplesHigh * sizeof(uint32_t),
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-    fallbackList = Buffer(
-        context, sizeof(glsl::WorkListHeader),
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-        false);
-    pointSampler = Sampler(context, nearestClampSampler());
-    gatherPipeline = createComputePipeline(context, "diffuse_gather.comp");
-    upsamplePipeline = createComputePipeline(context, "diffuse_upsample.comp");
-    fallbackPipeline = createComputePipeline(context, "diffuse_fallback.comp");
-}
-
-void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                              const VoxelVolumes& volumes) {
-    const VkSampler volumeSampler = volumes.sampler.sampler, point = pointSampler.sampler;
-    const uint32_t reducedWidth = gathered.desc.extent.width, reducedHeight = gathered.desc.extent.height;
-    const uint32_t width = diffuse.desc.extent.width, height = diffuse.desc.extent.height;
-
-    // 1. The representatives' cones.
-    beginWriting(commands, gathered);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.pipeline);
-    DescriptorPush()
-        .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, gathered.view)
-        .sampledImage(6, gbuffer.position.view, point)
-        .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.layout);
-    vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
-    finishWriting(commands, gathered, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-
-    // 2. Every sample upsampled, or listed. The list starts empty, once the last frame's
-    //    fallback dispatch has read it.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE);
-    const glsl::WorkListHeader empty{0u, 1u, 1u, 0u};
-    vkCmdUpdateBuffer(commands, fallbackList.buffer, 0, sizeof(empty), &empty);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    beginWriting(commands, diffuse);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.pipeline);
-    DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, diffuse.view)
-        .buffer(2, fallbackSamples.buffer)
-        .buffer(3, fallbackList.buffer)
-        .sampledImage(6, gbuffer.position.view, point)
-        .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(8, gathered.view, point)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
-    const uint32_t groupLimit = context_.properties.limits.maxComputeWorkGroupCount[0];
-    vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(groupLimit), &groupLimit);
-    vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
+// What a pass that appends to a work list wrote, visible to the pass over it and its indirect dispatch.
+void listWritten(VkCommandBuffer commands) {
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                       VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+}
 
-    // 3. The listed samples' own cones, into the texels step 2 left.
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, fallbackPipeline.pipeline);
+// Reset by a transfer each frame, and copied out for the frame's statistics.
+Buffer listHeader(GpuContext& context) {
+    return Buffer(context, sizeof(glsl::WorkListHeader),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                      VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  false);
+}
+
+}  // namespace
+
+DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, uint32_t samplesHigh, uint32_t downscale)
+    : context_(context), downscale_(downscale) {
+    const uint32_t reducedWide = (samplesWide + downscale - 1) / downscale;
+    const uint32_t reducedHigh = (samplesHigh + downscale - 1) / downscale;
+    auto level = [&](uint32_t width, uint32_t height, const char* light, const char* positions, const char* normals) {
+        return Level{image(context, width, height, light), image(context, width, height, positions),
+                     image(context, width, height, normals)};
+    };
+    for (FrameImages& frame : frames) {
+        frame.reduced = level(reducedWide, reducedHigh, "reduced diffuse cones", "reduced diffuse representatives",
+                              "reduced diffuse representatives' normals");
+        frame.samples = level(samplesWide, samplesHigh, "diffuse cones per sample", "diffuse cones' sample positions",
+                              "diffuse cones' sample normals");
+    }
+    tracedSamples = Buffer(context, VkDeviceSize(reducedWide) * reducedHigh * sizeof(uint32_t),
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+    tracedList = listHeader(context);
+    fallbackSamples = Buffer(context, VkDeviceSize(samplesWide) * samplesHigh * sizeof(uint32_t),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+    fallbackList = listHeader(context);
+    listHeaders = Buffer(context, 2 * sizeof(glsl::WorkListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    pointSampler = Sampler(context, nearestClampSampler());
+    reprojectPipeline = createComputePipeline(context, "diffuse_reproject.comp");
+    upsamplePipeline = createComputePipeline(context, "diffuse_upsample.comp");
+    traceListPipeline = createComputePipeline(context, "diffuse_trace_list.comp");
+}
+
+void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
+                              const VoxelVolumes& volumes, const glm::mat4& viewProjection) {
+    const VkSampler volumeSampler = volumes.sampler.sampler, point = pointSampler.sampler;
+    current_ = frameCount_ % 2;
+    const FrameImages& now = frames[current_];
+    const FrameImages& last = frames[1 - current_];
+    const uint32_t reducedWidth = now.reduced.light.desc.extent.width;
+    const uint32_t reducedHeight = now.reduced.light.desc.extent.height;
+    const uint32_t width = now.samples.light.desc.extent.width, height = now.samples.light.desc.extent.height;
+    auto images = [](const Level& level) {
+        return std::array<const GpuImage*, 3>{&level.light, &level.positions, &level.normals};
+    };
+
+    if (frameCount_ == 0)  // the last frame's images are bound, unread, before anything wrote them
+        for (const Level* level : {&last.reduced, &last.samples})
+            for (const GpuImage* image : images(*level))
+                imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+
+    // Both lists start empty, once the last frame's dispatches have read them.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE);
+    const glsl::WorkListHeader empty{0u, 1u, 1u, 0u};
+    vkCmdUpdateBuffer(commands, tracedList.buffer, 0, sizeof(empty), &empty);
+    vkCmdUpdateBuffer(commands, fallbackList.buffer, 0, sizeof(empty), &empty);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    // Steps 1 and 3 find the last frame's light alike (the shaders' Push blocks).
+    struct {
+        glm::mat4 lastViewProjection;
+        uint32_t groupLimit, refreshPhase, haveHistory;
+    } const reuse{lastViewProjection_, context_.properties.limits.maxComputeWorkGroupCount[0], frameCount_ % 4,
+                  haveHistory_ ? 1u : 0u};
+    // Steps 2 and 4: the listed samples' cones, into `target`'s texels, a representative's at its block.
+    auto traceListed = [&](const GpuImage& target, uint32_t targetDownscale, const Buffer& samples,
+                           const Buffer& list) {
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceListPipeline.pipeline);
+        DescriptorPush()
+            .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            .storageImage(1, target.view)
+            .buffer(2, samples.buffer)
+            .buffer(3, list.buffer)
+            .sampledImage(6, gbuffer.position.view, point)
+            .sampledImage(7, gbuffer.normal.view, point)
+            .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceListPipeline.layout);
+        vkCmdPushConstants(commands, traceListPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(targetDownscale),
+                           &targetDownscale);
+        vkCmdDispatchIndirect(commands, list.buffer, 0);
+    };
+
+    // 1. The representatives: the last frame's light where it holds, the rest listed.
+    for (const GpuImage* image : images(now.reduced)) beginWriting(commands, *image);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.pipeline);
     DescriptorPush()
-        .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, diffuse.view)
-        .buffer(2, fallbackSamples.buffer)
-        .buffer(3, fallbackList.buffer)
+        .storageImage(1, now.reduced.light.view)
+        .buffer(2, tracedSamples.buffer)
+        .buffer(3, tracedList.buffer)
+        .storageImage(4, now.reduced.positions.view)
+        .storageImage(5, now.reduced.normals.view)
         .sampledImage(6, gbuffer.position.view, point)
         .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, fallbackPipeline.layout);
-    vkCmdDispatchIndirect(commands, fallbackList.buffer, 0);
-    finishWriting(commands, diffuse, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+        .sampledImage(8, last.reduced.light.view, point)
+        .sampledImage(9, last.reduced.positions.view, point)
+        .sampledImage(10, last.reduced.normals.view, point)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.layout);
+    vkCmdPushConstants(commands, reprojectPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
+    vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
+    listWritten(commands);
+
+    // 2. The listed representatives' cones.
+    traceListed(now.reduced.light, downscale_, tracedSamples, tracedList);
+    for (const GpuImage* image : images(now.reduced))
+        finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+
+    // 3. Every sample upsampled, or its last light taken, or listed.
+    for (const GpuImage* image : images(now.samples)) beginWriting(commands, *image);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.pipeline);
+    DescriptorPush()
+        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .storageImage(1, now.samples.light.view)
+        .buffer(2, fallbackSamples.buffer)
+        .buffer(3, fallbackList.buffer)
+        .storageImage(4, now.samples.positions.view)
+        .storageImage(5, now.samples.normals.view)
+        .sampledImage(6, gbuffer.position.view, point)
+        .sampledImage(7, gbuffer.normal.view, point)
+        .sampledImage(8, now.reduced.light.view, point)
+        .sampledImage(9, now.reduced.positions.view, point)
+        .sampledImage(10, now.reduced.normals.view, point)
+        .sampledImage(12, last.samples.light.view, point)
+        .sampledImage(13, last.samples.positions.view, point)
+        .sampledImage(14, last.samples.normals.view, point)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
+    vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
+    vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
+    listWritten(commands);
+
+    // 4. The listed samples' own cones, into the texels step 3 left.
+    traceListed(now.samples.light, 1u, fallbackSamples, fallbackList);
+    finishWriting(commands, now.samples.light, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    for (const GpuImage* image : {&now.samples.positions, &now.samples.normals})
+        finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+
+    // The lists' counts, for the frame's statistics.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy traced{0, 0, sizeof(glsl::WorkListHeader)};
+    const VkBufferCopy fallback{0, sizeof(glsl::WorkListHeader), sizeof(glsl::WorkListHeader)};
+    vkCmdCopyBuffer(commands, tracedList.buffer, listHeaders.buffer, 1, &traced);
+    vkCmdCopyBuffer(commands, fallbackList.buffer, listHeaders.buffer, 1, &fallback);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+
+    haveHistory_ = true;
+    lastViewProjection_ = viewProjection;
+    ++frameCount_;
+}
+
+uint32_t DiffuseConesPass::tracedRepresentatives() const {
+    return static_cast<const glsl::WorkListHeader*>(listHeaders.mapped)[0].count;
+}
+
+uint32_t DiffuseConesPass::tracedFallbackSamples() const {
+    return static_cast<const glsl::WorkListHeader*>(listHeaders.mapped)[1].count;
 }
 
 }  // namespace vct

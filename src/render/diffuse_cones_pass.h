@@ -1,8 +1,11 @@
 // The diffuse cones at a reduced resolution (ImageSettings::diffuseDownscale): one G-buffer sample
-// per block traces them, every sample blends the nearest along its own surface, and the samples
-// where that fails trace their own, from a work list (shaders_glsl/reduced_diffuse.glsl). Only
-// created when the downscale is above 1.
+// per block traces them, or takes the last frame's light where it was (a quarter of the blocks
+// trace anew each frame), every sample blends the nearest along its own surface, and the samples
+// where that fails take their own light of the last frame or trace their own cones, from a work
+// list (shaders_glsl/reduced_diffuse.glsl). Only created when the downscale is above 1.
 #pragma once
+
+#include <glm/glm.hpp>
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
@@ -16,21 +19,49 @@ struct DiffuseConesPass {
     // rounded up.
     DiffuseConesPass(GpuContext& context, uint32_t samplesWide, uint32_t samplesHigh, uint32_t downscale);
 
-    // Leaves `diffuse` in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
+    // Leaves diffuse() in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
+    // `viewProjection` is the G-buffer's: the next frame finds this frame's light through it.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                const VoxelVolumes& volumes);
+                const VoxelVolumes& volumes, const glm::mat4& viewProjection);
+    // The light the last frames gathered no longer holds (the voxels' light was recomputed, or the
+    // cones changed): the next frame traces every block.
+    void forgetHistory() { haveHistory_ = false; }
 
-    // RGBA32F (scene units: a sun's light can exceed float16): Σ wᵢ Lᵢ of the diffuse cones and
-    // their weighted occlusion, per representative (`gathered`) and per sample (`diffuse`).
-    GpuImage gathered;
-    GpuImage diffuse;
-    Buffer fallbackSamples;  // the samples that trace their own cones, packed 16 bits a coordinate
+    // The last recorded frame's light per sample (RGBA32F, scene units: a sun's light can exceed
+    // float16): Σ wᵢ Lᵢ of the diffuse cones and their weighted occlusion.
+    const GpuImage& diffuse() const { return frames[current_].samples.light; }
+    // After the recorded commands ran: the representatives that traced their cones, and the
+    // samples that traced their own.
+    uint32_t tracedRepresentatives() const;
+    uint32_t tracedFallbackSamples() const;
+
+    // What one frame leaves for the next, per representative (reduced) and per sample: the light
+    // as diffuse(), and where the surface was (xyz, w 1 on a surface) and which way it faced.
+    struct Level {
+        GpuImage light;
+        GpuImage positions;
+        GpuImage normals;
+    };
+    struct FrameImages {
+        Level reduced;
+        Level samples;
+    };
+    FrameImages frames[2];   // this frame's and the last one's, alternately
+    Buffer tracedSamples;    // the representatives that trace this frame, packed 16 bits a coordinate
+    Buffer tracedList;       // glsl::WorkListHeader over them
+    Buffer fallbackSamples;  // the samples that trace their own cones
     Buffer fallbackList;     // glsl::WorkListHeader over them
+    Buffer listHeaders;      // host-visible copies of both headers, for the counts above
     Sampler pointSampler;
-    Pipeline gatherPipeline, upsamplePipeline, fallbackPipeline;
+    Pipeline reprojectPipeline, upsamplePipeline, traceListPipeline;
 
 private:
     GpuContext& context_;
+    uint32_t downscale_;
+    uint32_t frameCount_ = 0;  // frames recorded: picks the refresh phase and the current images
+    uint32_t current_ = 0;     // frames[current_] is the last recorded frame's
+    bool haveHistory_ = false;
+    glm::mat4 lastViewProjection_{1.0f};
 };
 
 }  // namespace vct

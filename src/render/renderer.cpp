@@ -157,9 +157,13 @@ void Renderer::setEnvironment(glm::vec3 environment) {
     setLights(lights_);  // the storage scale may change with it, and the light converges again
 }
 
-void Renderer::setShading(const ShadingSettings& shading) { settings_.shading = shading; }
+void Renderer::setShading(const ShadingSettings& shading) {
+    // Other cones gather other light: the reduced diffuse light of the last frames no longer holds.
+    if (diffuseConesPass_ && shading != settings_.shading) diffuseConesPass_->forgetHistory();
+    settings_.shading = shading;
+}
 
-void Renderer::writeFrameConstants() {
+glm::mat4 Renderer::writeFrameConstants() {
     const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
     glsl::FrameConstants constants{};
     Camera local = camera_;
@@ -198,12 +202,13 @@ void Renderer::writeFrameConstants() {
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
     constants.environment = glm::vec4(environment_, 0.0f);
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
+    return constants.viewProjection;
 }
 
 FrameStats Renderer::renderFrame() {
     const auto start = std::chrono::steady_clock::now();
     FrameStats stats;
-    writeFrameConstants();
+    const glm::mat4 viewProjection = writeFrameConstants();
     stats.plan = planFrame(stale_, settings_);
     const FramePlan& plan = stats.plan;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
@@ -264,6 +269,11 @@ FrameStats Renderer::renderFrame() {
                 if (converging && sweepEnds) recordMeanRadiance(commands);
             });
         });
+    // Light converged anew from the light sources, or new voxels, is not the light of the last
+    // frames' diffuse cones; a progressive bounce changes it by little, and reused light catches up
+    // within a few frames.
+    if (diffuseConesPass_ && (plan.runs(Pass::Voxelize) || (plan.runs(Pass::Inject) && !progressive)))
+        diffuseConesPass_->forgetHistory();
     bool converged = true;
     if (plan.runs(Pass::Inject)) {
         stats.bounces = 1;
@@ -289,8 +299,9 @@ FrameStats Renderer::renderFrame() {
     }
     submit([&](VkCommandBuffer commands) {
         run(commands, Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
-        run(commands, Pass::DiffuseCones,
-            [&] { diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_); });
+        run(commands, Pass::DiffuseCones, [&] {
+            diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_, viewProjection);
+        });
         run(commands, Pass::Shade, [&] {
             const bool reducedDiffuse = plan.runs(Pass::DiffuseCones);
             const ShadeVariant variant{
@@ -302,12 +313,16 @@ FrameStats Renderer::renderFrame() {
                 .areaLights = !areaLights_.empty() && settings_.shading.components.areaLights,
             };
             const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightBuffers(),
-                                     reducedDiffuse ? diffuseConesPass_->diffuse.view : VK_NULL_HANDLE, variant};
+                                     reducedDiffuse ? diffuseConesPass_->diffuse().view : VK_NULL_HANDLE, variant};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });
     });
     stats.bouncesConverged = converged;
+    if (plan.runs(Pass::DiffuseCones)) {
+        stats.diffuseBlocksTraced = diffuseConesPass_->tracedRepresentatives();
+        stats.diffuseSamplesTraced = diffuseConesPass_->tracedFallbackSamples();
+    }
     stale_ = afterFrame(stale_, plan, converged);
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;

@@ -38,6 +38,10 @@ struct FrameStats {
     bool bouncesConverged = true;  // the voxels' light changed by less than kBounceTolerance
     uint32_t occupiedVoxels = 0;   // voxels the last voxelization listed (the light passes' work)
     uint32_t bounceSlices = 1;     // a progressive bounce gathers for one of these slices a frame
+    // Reduced diffuse cones (DiffuseConesPass): blocks whose representative traced anew (the others
+    // reused the last frame's light), and samples that traced their own.
+    uint32_t diffuseBlocksTraced = 0;
+    uint32_t diffuseSamplesTraced = 0;
 
     double gpuMilliseconds() const;
     bool ran(const std::string& pass) const;
@@ -86,7 +90,7 @@ public:
     uint64_t deviceMemoryBytes() const;
 
 private:
-    void writeFrameConstants();
+    glm::mat4 writeFrameConstants();  // returns the camera's view-projection it wrote
     // Copies the radiance volume's mean (its 1×1×1 level) to meanRadiance_, and tells, once the
     // commands ran, whether it moved by less than kBounceTolerance since the last time.
     void recordMeanRadiance(VkCommandBuffer commands);

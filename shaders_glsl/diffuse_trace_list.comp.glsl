@@ -1,0 +1,34 @@
+#version 460
+// Reduced diffuse cones, steps 2 and 4 (reduced_diffuse.glsl): the listed samples trace their own
+// cones, into their texel of `target`: the reduced image (targetDownscale = f) for the
+// representatives, the per-sample one (1) for the samples that could not be upsampled.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.h"
+
+layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D target;
+layout(std430, set = 0, binding = 2) readonly buffer Samples { uint listedSamples[]; };
+layout(std430, set = 0, binding = 3) readonly buffer SampleList { WorkListHeader list; };
+layout(set = 0, binding = 6) uniform sampler2D gPosition;
+layout(set = 0, binding = 7) uniform sampler2D gNormal;
+layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
+layout(push_constant) uniform Push { uint targetDownscale; };
+#include "directional_voxels.glsl"
+
+#include "cone_tracing.glsl"
+#include "reduced_diffuse.glsl"
+
+void main() {
+    // The dispatch may be capped below ⌈count / group size⌉: each invocation strides over the rest.
+    uint stride = gl_NumWorkGroups.x * WORK_LIST_GROUP_SIZE;
+    for (uint i = gl_GlobalInvocationID.x; i < list.count; i += stride) {
+        ivec2 pixel = unpackSample(listedSamples[i]);
+        vec3 position = texelFetch(gPosition, pixel, 0).xyz;
+        // A representative's block holds it: its texel is the sample's coordinates / f.
+        imageStore(target, pixel / int(targetDownscale),
+                   gatherDiffuse(position, normalize(texelFetch(gNormal, pixel, 0).xyz)));
+    }
+}
