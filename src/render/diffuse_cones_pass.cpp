@@ -109,8 +109,8 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     struct {
         glm::mat4 lastViewProjection;
         uint32_t groupLimit, refreshPhase, haveHistory;
-    } const reuse{lastViewProjection_, context_.properties.limits.maxComputeWorkGroupCount[0], frameCount_ % 4,
-                  haveHistory_ ? 1u : 0u};
+    } const reuse{lastViewProjection_, context_.properties.limits.maxComputeWorkGroupCount[0],
+                  frameCount_ % kRefreshPeriod, haveHistory_ ? 1u : 0u};
     // Steps 2 and 4: the listed samples' cones, into `target`'s texels, a representative's at its block.
     auto traceListed = [&](const GpuImage& target, uint32_t targetDownscale, const Buffer& samples,
                            const Buffer& list) {
@@ -195,6 +195,9 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                   VK_ACCESS_2_HOST_READ_BIT);
 
+    if (!haveHistory_) stillFrames_ = kRefreshPeriod;  // every block traced: settled at once
+    else if (viewProjection != lastViewProjection_) stillFrames_ = 0;
+    else ++stillFrames_;
     haveHistory_ = true;
     lastViewProjection_ = viewProjection;
     ++frameCount_;

@@ -26,6 +26,12 @@ struct DiffuseConesPass {
     // The light the last frames gathered no longer holds (the voxels' light was recomputed, or the
     // cones changed): the next frame traces every block.
     void forgetHistory() { haveHistory_ = false; }
+    // The voxels' light changed by a progressive bounce: the light reused from the last frames
+    // lags it until every block has traced again.
+    void lightChanged() { stillFrames_ = 0; }
+    // Whether the last frame is the image that tracing every block anew would give: each block and
+    // edge sample traced since the view and the voxels' light last changed.
+    bool settled() const { return stillFrames_ + 1 >= kRefreshPeriod; }
 
     // The last recorded frame's light per sample (RGBA32F, scene units: a sun's light can exceed
     // float16): Σ wᵢ Lᵢ of the diffuse cones and their weighted occlusion.
@@ -58,8 +64,10 @@ struct DiffuseConesPass {
 private:
     GpuContext& context_;
     uint32_t downscale_;
-    uint32_t frameCount_ = 0;  // frames recorded: picks the refresh phase and the current images
-    uint32_t current_ = 0;     // frames[current_] is the last recorded frame's
+    uint32_t frameCount_ = 0;                      // frames recorded: picks the refresh phase and the current images
+    uint32_t current_ = 0;                         // frames[current_] is the last recorded frame's
+    static constexpr uint32_t kRefreshPeriod = 4;  // frames in which every block traces once (2×2 pattern)
+    uint32_t stillFrames_ = 0;  // frames since the view or the light last changed, not counting that one
     bool haveHistory_ = false;
     glm::mat4 lastViewProjection_{1.0f};
 };

@@ -274,6 +274,7 @@ FrameStats Renderer::renderFrame() {
     // within a few frames.
     if (diffuseConesPass_ && (plan.runs(Pass::Voxelize) || (plan.runs(Pass::Inject) && !progressive)))
         diffuseConesPass_->forgetHistory();
+    else if (diffuseConesPass_ && plan.runs(Pass::Inject)) diffuseConesPass_->lightChanged();
     bool converged = true;
     if (plan.runs(Pass::Inject)) {
         stats.bounces = 1;
@@ -319,6 +320,7 @@ FrameStats Renderer::renderFrame() {
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });
     });
     stats.bouncesConverged = converged;
+    diffuseReuseSettling_ = plan.runs(Pass::DiffuseCones) && !diffuseConesPass_->settled();
     if (plan.runs(Pass::DiffuseCones)) {
         stats.diffuseBlocksTraced = diffuseConesPass_->tracedRepresentatives();
         stats.diffuseSamplesTraced = diffuseConesPass_->tracedFallbackSamples();
@@ -404,6 +406,10 @@ uint64_t Renderer::deviceMemoryBytes() const {
              &gbufferPass_->depth, &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps,
              &shadowPass_->localMaps, &shadowPass_->areaMaps})
         bytes += image->memorySize;
+    if (diffuseConesPass_)
+        for (const DiffuseConesPass::FrameImages& frame : diffuseConesPass_->frames)
+            for (const DiffuseConesPass::Level* level : {&frame.reduced, &frame.samples})
+                bytes += level->light.memorySize + level->positions.memorySize + level->normals.memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{
              &sceneGpu_->vertices, &sceneGpu_->indices, &sceneGpu_->triangleMaterials, &sceneGpu_->materials})

@@ -72,9 +72,10 @@ public:
 
     // Records, submits and waits for one frame.
     FrameStats renderFrame();
-    // Progressive bounces have not converged yet: the next frame changes the image even if
-    // nothing else does.
-    bool settling() const { return stale_.bounces; }
+    // Progressive bounces have not converged yet, or the reduced diffuse cones' reused light has not
+    // all been traced anew since the view or the light changed: the next frame changes the image
+    // even if nothing else does.
+    bool settling() const { return stale_.bounces || diffuseReuseSettling_; }
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
 
@@ -119,8 +120,9 @@ private:
     Buffer frameConstants_;
     Buffer meanRadiance_;  // host-visible RGBA16F texel
     float lastMeanRadiance_ = 0.0f;
-    uint32_t slicePhase_ = 0;  // the occupied voxels' slice the next progressive bounce gathers for
-    Buffer occupiedHeader_;    // host-visible copy of the occupied list's header, made after voxelizing
+    bool diffuseReuseSettling_ = false;  // see settling()
+    uint32_t slicePhase_ = 0;            // the occupied voxels' slice the next progressive bounce gathers for
+    Buffer occupiedHeader_;              // host-visible copy of the occupied list's header, made after voxelizing
     uint32_t occupiedVoxels_ = 0;
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;

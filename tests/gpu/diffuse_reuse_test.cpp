@@ -110,6 +110,26 @@ TEST_F(DiffuseReuse, AViewThatMovedAndCameBackIsAsCloseToTheTruthAsAFreshRender)
         << "most blocks and samples reuse the last frame's light";
 }
 
+TEST_F(DiffuseReuse, AViewThatStopsSettlesInFourFramesOnAFreshRendersImage) {
+    // The viewer draws while the renderer is settling: after the view stops, every block and edge
+    // sample traces anew within four frames, and the image is then a fresh render's.
+    Renderer renderer(gpu(), scene, reducedSettings());
+    renderer.renderFrame();
+    EXPECT_FALSE(renderer.settling()) << "a first frame traces everything";
+    const Camera stopped = orbited(renderer.camera(), scene.bounds().center(), 5.0f);
+    renderer.setCamera(stopped);
+    int frames = 0;
+    do {
+        renderer.renderFrame();
+        ++frames;
+    } while (renderer.settling() && frames < 10);
+    EXPECT_EQ(frames, 4);
+    Renderer fresh(gpu(), scene, reducedSettings());
+    fresh.setCamera(stopped);
+    fresh.renderFrame();
+    EXPECT_LT(largestDifference(renderer.readImage(), fresh.readImage()), 1e-4);
+}
+
 TEST_F(DiffuseReuse, LightThatConvergesAnewIsTracedAnew) {
     // A light moved with converged bounces is a new solution: no block keeps the old light.
     Renderer renderer(gpu(), scene, reducedSettings());

@@ -169,9 +169,11 @@ TEST_F(View, ProgressiveBouncesSettleAndThenTheImageStays) {
 }
 
 TEST_F(View, ResetKeyReturnsToTheSceneCamera) {
+    // The reset view's image is the start's once its reused diffuse light has all been traced
+    // anew: four frames after the view last moved.
     const std::string events = std::string(hidePanels) +
                                "1 screenshot start.png; 2 key D down; 6 key D up; 7 screenshot moved.png;"
-                               "8 key R press; 9 screenshot reset.png; 10 quit";
+                               "8 key R press; 12 screenshot reset.png; 13 quit";
     ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
     EXPECT_GT(changedFraction(screenshot("start.png"), screenshot("moved.png")), 0.05);
     EXPECT_LT(changedFraction(screenshot("start.png"), screenshot("reset.png")), 0.001);
@@ -472,10 +474,11 @@ TEST_F(View, TheGridBoundsKeyDrawsTheVoxelGridsBoxAroundTheScene) {
     // O and the wheel back: orbiting far enough out that the whole grid is in view. G draws the
     // grid's box as amber lines over the image, G again hides it. The voxel grid holds the scene,
     // and fits it (the Cornell box is a cube, the grid a cube a little larger): the lines' bounding
-    // rectangle holds every lit pixel of the plain image and is not much larger than theirs.
+    // rectangle holds every lit pixel of the plain image and is not much larger than theirs. The
+    // plain image is taken once the view's reused diffuse light has settled (four frames).
     const std::string events = std::string(hidePanels) +
-                               "1 key O press; 2 scroll -8; 4 screenshot plain.png; 5 key G press;"
-                               "6 screenshot box.png; 7 key G press; 8 screenshot off.png; 9 quit";
+                               "1 key O press; 2 scroll -8; 8 screenshot plain.png; 9 key G press;"
+                               "10 screenshot box.png; 11 key G press; 12 screenshot off.png; 13 quit";
     ASSERT_EQ(runViewer("--events '" + events + "'"), 0) << log;
     const Png plain = screenshot("plain.png"), box = screenshot("box.png");
     ASSERT_FALSE(box.rgb.empty()) << log;
