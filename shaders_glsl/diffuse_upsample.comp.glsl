@@ -1,7 +1,6 @@
 #version 460
 // Reduced diffuse cones, step 3 (reduced_diffuse.glsl): every sample's light from the four
-// representatives around it on its own surface, or its own light of the last frame, or the sample
-// listed for its own cones.
+// representatives around it on its own surface, or the sample listed for its own cones.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
@@ -11,22 +10,12 @@ layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D diffuse;
 layout(std430, set = 0, binding = 2) writeonly buffer Fallback { uint fallbackSamples[]; };
 layout(std430, set = 0, binding = 3) buffer FallbackList { WorkListHeader fallback; };
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D samplePositions;
-layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D sampleNormals;
 layout(set = 0, binding = 6) uniform sampler2D gPosition;
 layout(set = 0, binding = 7) uniform sampler2D gNormal;
 layout(set = 0, binding = 8) uniform sampler2D gathered;
 layout(set = 0, binding = 9) uniform sampler2D representatives;
 layout(set = 0, binding = 10) uniform sampler2D representativeNormals;
-layout(set = 0, binding = 12) uniform sampler2D lastDiffuse;
-layout(set = 0, binding = 13) uniform sampler2D lastSamplePositions;
-layout(set = 0, binding = 14) uniform sampler2D lastSampleNormals;
-layout(push_constant) uniform Push {
-    mat4 lastViewProjection;
-    uint groupLimit;
-    uint refreshPhase;
-    uint haveHistory;  // 0: every sample that cannot be upsampled traces
-};
+layout(push_constant) uniform Push { uint groupLimit; };
 
 #include "reduced_diffuse.glsl"
 
@@ -36,24 +25,13 @@ void main() {
     vec4 positionMaterial = texelFetch(gPosition, pixel, 0);
     if (positionMaterial.w < 0.5f) {
         imageStore(diffuse, pixel, vec4(0.0f));  // background: shading reads nothing here
-        imageStore(samplePositions, pixel, vec4(0.0f));
         return;
     }
-    vec3 position = positionMaterial.xyz;
     vec3 normal = normalize(texelFetch(gNormal, pixel, 0).xyz);
-    imageStore(samplePositions, pixel, vec4(position, 1.0f));
-    imageStore(sampleNormals, pixel, vec4(normal, 0.0f));
     SurfaceBlend blend = blendOnSurface(gathered, representatives, representativeNormals,
-                                        reducedCoordinate(vec2(pixel)), position, normal);
+                                        reducedCoordinate(vec2(pixel)), positionMaterial.xyz, normal);
     if (blend.weight > UPSAMPLE_MIN_WEIGHT) {
         imageStore(diffuse, pixel, blend.sum / blend.weight);
-        return;
-    }
-    vec4 light;
-    if (haveHistory != 0u && !refreshes(pixel, refreshPhase) &&
-        lastLight(lastViewProjection, lastDiffuse, lastSamplePositions, lastSampleNormals, false, position, normal,
-                  light)) {
-        imageStore(diffuse, pixel, light);
         return;
     }
     uint slot = atomicAdd(fallback.count, 1u);

@@ -52,16 +52,11 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
     : context_(context), downscale_(downscale) {
     const uint32_t reducedWide = (samplesWide + downscale - 1) / downscale;
     const uint32_t reducedHigh = (samplesHigh + downscale - 1) / downscale;
-    auto level = [&](uint32_t width, uint32_t height, const char* light, const char* positions, const char* normals) {
-        return Level{image(context, width, height, light), image(context, width, height, positions),
-                     image(context, width, height, normals)};
-    };
-    for (FrameImages& frame : frames) {
-        frame.reduced = level(reducedWide, reducedHigh, "reduced diffuse cones", "reduced diffuse representatives",
-                              "reduced diffuse representatives' normals");
-        frame.samples = level(samplesWide, samplesHigh, "diffuse cones per sample", "diffuse cones' sample positions",
-                              "diffuse cones' sample normals");
-    }
+    for (Reduced& frame : reduced)
+        frame = {image(context, reducedWide, reducedHigh, "reduced diffuse cones"),
+                 image(context, reducedWide, reducedHigh, "reduced diffuse representatives"),
+                 image(context, reducedWide, reducedHigh, "reduced diffuse representatives' normals")};
+    samples = image(context, samplesWide, samplesHigh, "diffuse cones per sample");
     tracedSamples = Buffer(context, VkDeviceSize(reducedWide) * reducedHigh * sizeof(uint32_t),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     tracedList = listHeader(context);
@@ -78,22 +73,17 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
 void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
                               const VoxelVolumes& volumes, const glm::mat4& viewProjection) {
     const VkSampler volumeSampler = volumes.sampler.sampler, point = pointSampler.sampler;
-    current_ = frameCount_ % 2;
-    const FrameImages& now = frames[current_];
-    const FrameImages& last = frames[1 - current_];
-    const uint32_t reducedWidth = now.reduced.light.desc.extent.width;
-    const uint32_t reducedHeight = now.reduced.light.desc.extent.height;
-    const uint32_t width = now.samples.light.desc.extent.width, height = now.samples.light.desc.extent.height;
-    auto images = [](const Level& level) {
-        return std::array<const GpuImage*, 3>{&level.light, &level.positions, &level.normals};
-    };
+    const Reduced& now = reduced[frameCount_ % 2];
+    const Reduced& last = reduced[(frameCount_ + 1) % 2];
+    const uint32_t reducedWidth = now.light.desc.extent.width, reducedHeight = now.light.desc.extent.height;
+    const uint32_t width = samples.desc.extent.width, height = samples.desc.extent.height;
+    const std::array<const GpuImage*, 3> nowImages{&now.light, &now.positions, &now.normals};
 
     if (frameCount_ == 0)  // the last frame's images are bound, unread, before anything wrote them
-        for (const Level* level : {&last.reduced, &last.samples})
-            for (const GpuImage* image : images(*level))
-                imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        for (const GpuImage* image : {&last.light, &last.positions, &last.normals})
+            imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 
     // Both lists start empty, once the last frame's dispatches have read them.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -105,21 +95,19 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
-    // Steps 1 and 3 find the last frame's light alike (the shaders' Push blocks).
+    const uint32_t groupLimit = context_.properties.limits.maxComputeWorkGroupCount[0];
     struct {
         glm::mat4 lastViewProjection;
         uint32_t groupLimit, refreshPhase, haveHistory;
-    } const reuse{lastViewProjection_, context_.properties.limits.maxComputeWorkGroupCount[0],
-                  frameCount_ % kRefreshPeriod, haveHistory_ ? 1u : 0u};
+    } const reuse{lastViewProjection_, groupLimit, frameCount_ % kRefreshPeriod, haveHistory_ ? 1u : 0u};
     // Steps 2 and 4: the listed samples' cones, into `target`'s texels, a representative's at its block.
-    auto traceListed = [&](const GpuImage& target, uint32_t targetDownscale, const Buffer& samples,
-                           const Buffer& list) {
+    auto traceListed = [&](const GpuImage& target, uint32_t targetDownscale, const Buffer& listed, const Buffer& list) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceListPipeline.pipeline);
         DescriptorPush()
             .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
             .storageImage(1, target.view)
-            .buffer(2, samples.buffer)
+            .buffer(2, listed.buffer)
             .buffer(3, list.buffer)
             .sampledImage(6, gbuffer.position.view, point)
             .sampledImage(7, gbuffer.normal.view, point)
@@ -132,58 +120,50 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     };
 
     // 1. The representatives: the last frame's light where it holds, the rest listed.
-    for (const GpuImage* image : images(now.reduced)) beginWriting(commands, *image);
+    for (const GpuImage* image : nowImages) beginWriting(commands, *image);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.pipeline);
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, now.reduced.light.view)
+        .storageImage(1, now.light.view)
         .buffer(2, tracedSamples.buffer)
         .buffer(3, tracedList.buffer)
-        .storageImage(4, now.reduced.positions.view)
-        .storageImage(5, now.reduced.normals.view)
+        .storageImage(4, now.positions.view)
+        .storageImage(5, now.normals.view)
         .sampledImage(6, gbuffer.position.view, point)
         .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(8, last.reduced.light.view, point)
-        .sampledImage(9, last.reduced.positions.view, point)
-        .sampledImage(10, last.reduced.normals.view, point)
+        .sampledImage(8, last.light.view, point)
+        .sampledImage(9, last.positions.view, point)
+        .sampledImage(10, last.normals.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.layout);
     vkCmdPushConstants(commands, reprojectPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
     listWritten(commands);
 
     // 2. The listed representatives' cones.
-    traceListed(now.reduced.light, downscale_, tracedSamples, tracedList);
-    for (const GpuImage* image : images(now.reduced))
-        finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    traceListed(now.light, downscale_, tracedSamples, tracedList);
+    for (const GpuImage* image : nowImages) finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 
-    // 3. Every sample upsampled, or its last light taken, or listed.
-    for (const GpuImage* image : images(now.samples)) beginWriting(commands, *image);
+    // 3. Every sample upsampled, or listed.
+    beginWriting(commands, samples);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.pipeline);
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, now.samples.light.view)
+        .storageImage(1, samples.view)
         .buffer(2, fallbackSamples.buffer)
         .buffer(3, fallbackList.buffer)
-        .storageImage(4, now.samples.positions.view)
-        .storageImage(5, now.samples.normals.view)
         .sampledImage(6, gbuffer.position.view, point)
         .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(8, now.reduced.light.view, point)
-        .sampledImage(9, now.reduced.positions.view, point)
-        .sampledImage(10, now.reduced.normals.view, point)
-        .sampledImage(12, last.samples.light.view, point)
-        .sampledImage(13, last.samples.positions.view, point)
-        .sampledImage(14, last.samples.normals.view, point)
+        .sampledImage(8, now.light.view, point)
+        .sampledImage(9, now.positions.view, point)
+        .sampledImage(10, now.normals.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
-    vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
+    vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(groupLimit), &groupLimit);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
     listWritten(commands);
 
     // 4. The listed samples' own cones, into the texels step 3 left.
-    traceListed(now.samples.light, 1u, fallbackSamples, fallbackList);
-    finishWriting(commands, now.samples.light, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-    for (const GpuImage* image : {&now.samples.positions, &now.samples.normals})
-        finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    traceListed(samples, 1u, fallbackSamples, fallbackList);
+    finishWriting(commands, samples, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
 
     // The lists' counts, for the frame's statistics.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -407,9 +407,11 @@ uint64_t Renderer::deviceMemoryBytes() const {
              &shadowPass_->localMaps, &shadowPass_->areaMaps})
         bytes += image->memorySize;
     if (diffuseConesPass_)
-        for (const DiffuseConesPass::FrameImages& frame : diffuseConesPass_->frames)
-            for (const DiffuseConesPass::Level* level : {&frame.reduced, &frame.samples})
-                bytes += level->light.memorySize + level->positions.memorySize + level->normals.memorySize;
+        for (const GpuImage* image : {&diffuseConesPass_->samples, &diffuseConesPass_->reduced[0].light,
+                                      &diffuseConesPass_->reduced[0].positions, &diffuseConesPass_->reduced[0].normals,
+                                      &diffuseConesPass_->reduced[1].light, &diffuseConesPass_->reduced[1].positions,
+                                      &diffuseConesPass_->reduced[1].normals})
+            bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{
              &sceneGpu_->vertices, &sceneGpu_->indices, &sceneGpu_->triangleMaterials, &sceneGpu_->materials})
