@@ -37,6 +37,11 @@ struct TextureReference {
     glm::vec2 scale{1.0f};
 };
 
+// glTF alphaMode (§3.9.4): what the base colour's alpha, the factor's times the texture's, means.
+// Opaque ignores it; Mask makes the surface a hole where it is below alphaCutoff; Blend makes it
+// that fraction of the surface (rendered as the README's glTF table says).
+enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
+
 // glTF pbrMetallicRoughness, plus emission and KHR_materials_specular's weight.
 struct Material {
     std::string name;
@@ -61,6 +66,8 @@ struct Material {
     glm::vec3 emission{0.0f};          // emissiveFactor × KHR_materials_emissive_strength: radiance
     TextureReference emissiveTexture;  // sRGB; multiplies `emission`
     bool doubleSided = false;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;  // Mask: where alpha < alphaCutoff there is no surface (glTF default 0.5)
 };
 
 // How texture coordinates outside [0, 1] read a texture (glTF sampler wrapS / wrapT).
