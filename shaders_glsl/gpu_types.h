@@ -29,8 +29,8 @@ struct GpuMaterial {
     float normalScale;             // scales the normal texture's x and y
     int occlusionTexture;          // -1 = none; linear, red scales the indirect light (glTF)
     float occlusionStrength;       // occlusion = 1 + strength · (red − 1)
-    uint unused0;
-    uint unused1;
+    uint alphaMode;                // ALPHA_OPAQUE, ALPHA_MASK or ALPHA_BLEND (alpha_coverage.h)
+    float alphaCutoff;             // ALPHA_MASK: coverage (base colour alpha) below it is a hole
     // Where each texture is read (texture_transform.h).
     GpuTextureTransform baseColorTransform;
     GpuTextureTransform emissiveTransform;
