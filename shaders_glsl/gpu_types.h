@@ -18,7 +18,8 @@ struct GpuVertex {
 struct GpuMaterial {
     vec4 baseColorFactor;  // linear rgb, alpha
     vec4 emission;         // rgb radiance from the front face, before the emissive texture
-    vec4 voxelEmission;    // rgb emission × the emissive texture's mean (voxelEmission() in material_textures.h)
+    vec4 voxelEmission;    // rgb emission × the emissive texture's mean (voxelEmission() in material_textures.h),
+                           // w the share of the surface the voxels see (voxelCoverage() there)
     float metallic;
     float roughness;
     float specularWeight;

@@ -150,7 +150,7 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         glsl::GpuMaterial gpu{};
         gpu.baseColorFactor = material.baseColorFactor;
         gpu.emission = glm::vec4(material.emission, 0.0f);
-        gpu.voxelEmission = glm::vec4(voxelEmission(scene, material), 0.0f);
+        gpu.voxelEmission = glm::vec4(voxelEmission(scene, material), voxelCoverage(scene, material));
         gpu.metallic = material.metallic;
         gpu.roughness = material.roughness;
         gpu.specularWeight = material.specularWeight;

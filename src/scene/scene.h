@@ -136,6 +136,12 @@ struct Scene {
 
     size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;
+    // Whether any material is MASK or BLEND: only then does the voxelizer keep an opacity channel.
+    bool hasAlphaMaterials() const {
+        for (const Material& material : materials)
+            if (material.alphaMode != AlphaMode::Opaque) return true;
+        return false;
+    }
 };
 
 // Computes the axis-aligned bounds of all vertices (zero bounds for an empty scene).
