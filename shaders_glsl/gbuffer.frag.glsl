@@ -3,8 +3,10 @@
 // colour + metallic, and the emissive texture's colour (the shading pass multiplies it with the
 // material's emission) + roughness. Four targets, the most Vulkan guarantees (maxColorAttachments ≥ 4):
 // metallic and roughness ride in the alpha channels of the two colour targets, the front-face flag
-// and the occlusion texture's value share the normal's (gbufferSideOcclusion).
+// and the occlusion texture's value share the normal's (gbufferSideOcclusion). Fragments the
+// material's alpha leaves uncovered are discarded (alpha_coverage.h).
 #extension GL_GOOGLE_include_directive : require
+#include "alpha_coverage.h"
 #include "gpu_types.h"
 #include "normal_map.h"
 #include "gbuffer_packing.h"
@@ -15,6 +17,9 @@ layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial mat
 // (no descriptor-indexing feature needed: lavapipe has none).
 layout(push_constant) uniform Push { uint materialIndex; };
 layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
+// True in the pipeline that draws MASK and BLEND materials: only it may discard, so the opaque
+// materials' pipeline keeps its early depth test.
+layout(constant_id = 1) const bool ALPHA_TESTED = false;
 // Base colour and emissive (sRGB), metallic-roughness (linear): the image's format decodes each.
 layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
 
@@ -89,6 +94,11 @@ void main() {
         }
     }
     if (!frontFace) normal = -normal;
+
+    // glTF alphaMode: a cut-out (MASK) or a stochastic share of the pixels (BLEND), alpha_coverage.h.
+    // Discarded only here, after every derivative above was taken with the whole quad.
+    if (ALPHA_TESTED && !coversPixel(material.alphaMode, material.alphaCutoff, baseColor.a, gl_FragCoord.xy))
+        discard;
 
     outPosition = vec4(worldPosition, float(materialIndex + 1u));
     outNormal = vec4(normal, gbufferSideOcclusion(frontFace, occlusion));

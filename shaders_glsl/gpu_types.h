@@ -18,7 +18,8 @@ struct GpuVertex {
 struct GpuMaterial {
     vec4 baseColorFactor;  // linear rgb, alpha
     vec4 emission;         // rgb radiance from the front face, before the emissive texture
-    vec4 voxelEmission;    // rgb emission × the emissive texture's mean (voxelEmission() in material_textures.h)
+    vec4 voxelEmission;    // rgb emission × the emissive texture's mean (voxelEmission() in material_textures.h),
+                           // w the share of the surface the voxels see (voxelCoverage() there)
     float metallic;
     float roughness;
     float specularWeight;
@@ -29,8 +30,8 @@ struct GpuMaterial {
     float normalScale;             // scales the normal texture's x and y
     int occlusionTexture;          // -1 = none; linear, red scales the indirect light (glTF)
     float occlusionStrength;       // occlusion = 1 + strength · (red − 1)
-    uint unused0;
-    uint unused1;
+    uint alphaMode;                // ALPHA_OPAQUE, ALPHA_MASK or ALPHA_BLEND (alpha_coverage.h)
+    float alphaCutoff;             // ALPHA_MASK: coverage (base colour alpha) below it is a hole
     // Where each texture is read (texture_transform.h).
     GpuTextureTransform baseColorTransform;
     GpuTextureTransform emissiveTransform;

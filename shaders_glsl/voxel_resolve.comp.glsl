@@ -1,6 +1,8 @@
 #version 460
 // Turns the integer sums of the voxelize pass into averages: one invocation per voxel.
-//   albedoOpacity: mean linear base colour, opacity 1 where any triangle touched, else 0.
+//   albedoOpacity: mean linear base colour; opacity the largest coverage of the touching triangles
+//                  (1 for opaque ones, voxelize.h), at least 1/255 where any triangle touched (so an
+//                  occupied voxel never reads as empty), else 0.
 //   normal: xyz the mean of the touching triangles' unit normals, deliberately not renormalized (its
 //           length says how much they agree: the two faces of a thin wall cancel to ~0); w the
 //           triangle count, clamped to the largest half float.
@@ -55,7 +57,10 @@ void main() {
     uint emitters = accumulation[ACCUM_EMITTERS].values[index];
     vec3 radiance = emitters == 0u ? vec3(0.0f)
                                    : channelMean(ACCUM_EMISSION, index, float(emitters), false) * params.emission.y;
-    imageStore(albedoOpacity, texel, vec4(albedo, 1.0f));
+    float opacity = params.dispatch.z == 0u
+                        ? 1.0f
+                        : max(float(accumulation[ACCUM_OPACITY].values[index]) / OPACITY_FIXED_SCALE, 1.0f / 255.0f);
+    imageStore(albedoOpacity, texel, vec4(albedo, opacity));
     imageStore(normalCount, texel, vec4(normal, min(n, HALF_FLOAT_MAX)));
-    imageStore(emission, texel, vec4(min(radiance, vec3(HALF_FLOAT_MAX)), 1.0f));
+    imageStore(emission, texel, vec4(min(radiance, vec3(HALF_FLOAT_MAX)), opacity));
 }

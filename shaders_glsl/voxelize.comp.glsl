@@ -5,6 +5,8 @@
 // Base colour is the material's baseColorFactor only: textures are ignored for now (a voxel covers
 // many texels, and sampling them here needs the texture array and the UVs; a later refinement).
 // Emission is the material's voxelEmission: its emission times its emissive texture's mean colour.
+// Opacity is the largest voxel coverage (voxelEmission.w: alpha as a mean over the texture) of the
+// touching triangles; a triangle of coverage 0 (a fully transparent material) adds nothing.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 #include "voxelize.h"
@@ -48,11 +50,15 @@ void main() {
     if (!triangleTouchesBox(a, b, c, vec3(voxel) + 0.5f, 0.5f)) return;
 
     GpuMaterial material = materials[triangleMaterials[triangle]];
+    float coverage = clamp(material.voxelEmission.w, 0.0f, 1.0f);
+    if (!(coverage > 0.0f)) return;
     vec3 albedo = clamp(material.baseColorFactor.rgb, 0.0f, 1.0f);
     vec3 normal = unitNormal(a, b, c);
     vec3 emission = clamp(material.voxelEmission.rgb * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
     uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);
     atomicAdd(accumulation[ACCUM_COUNT].values[index], 1u);
+    if (params.dispatch.z != 0u)
+        atomicMax(accumulation[ACCUM_OPACITY].values[index], toFixed(coverage, OPACITY_FIXED_SCALE));
     for (uint i = 0u; i < 3u; ++i) {
         atomicAdd(accumulation[ACCUM_ALBEDO + i].values[index], toFixed(albedo[i], ALBEDO_FIXED_SCALE));
         atomicAdd(accumulation[ACCUM_NORMAL + i].values[index], toFixed(normal[i], NORMAL_FIXED_SCALE));

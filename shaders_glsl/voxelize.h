@@ -12,6 +12,12 @@
 // voxels with the ceiling, and averaging over both would halve its light in the voxels. Opacity and
 // albedo come from every triangle.
 //
+// Coverage (glTF alphaMode). A material's voxelCoverage (material_textures.h, GpuMaterial::
+// voxelEmission.w) is the share of its surface that is there: a voxel's opacity is the largest
+// coverage of the triangles touching it (a surface cut into many triangles covers a voxel no more
+// than one of them does; an opaque one makes it opaque), and a triangle of coverage 0 touches
+// nothing. Albedo, normal and emission stay plain means over the triangles that touch.
+//
 // Order-independent averaging. Each touching triangle adds its attributes to integer sums with
 // atomicAdd; integer addition is associative, so the sums (and the images) do not depend on the
 // order the GPU happens to run the work items in. Float atomics would round differently per order.
@@ -39,10 +45,14 @@ const uint ACCUM_ALBEDO = 1u;    // 3 channels, rgb × ALBEDO_FIXED_SCALE
 const uint ACCUM_NORMAL = 4u;    // 3 channels, xyz × NORMAL_FIXED_SCALE (two's complement)
 const uint ACCUM_EMISSION = 7u;  // 3 channels, rgb × VoxelizeParams.emission.x, emitting triangles only
 const uint ACCUM_EMITTERS = 10u;  // emitting triangles touching the voxel
-const uint ACCUM_CHANNELS = 11u;
+// The largest coverage × OPACITY_FIXED_SCALE of the touching triangles; kept only for a scene with
+// MASK or BLEND materials (VoxelizeParams.dispatch.z = 1), else one word, never read: opacity is 1.
+const uint ACCUM_OPACITY = 11u;
+const uint ACCUM_CHANNELS = 12u;
 
 const float ALBEDO_FIXED_SCALE = 32768.0f;
 const float NORMAL_FIXED_SCALE = 16384.0f;
+const float OPACITY_FIXED_SCALE = 32768.0f;  // coverage in [0, 1]; atomicMax, so no sum to overflow
 const float EMISSION_FIXED_MAX = 32768.0f;     // the scene's largest emission component maps here
 const uint MAX_EXACT_CONTRIBUTIONS = 131071u;  // triangles per voxel before a sum could overflow
 const float HALF_FLOAT_MAX = 65504.0f;
@@ -51,7 +61,8 @@ struct VoxelizeParams {
     VoxelGridParams grid;  // resolution.w = work items
     vec4 emission;         // x fixed-point scale (EMISSION_FIXED_MAX / largest component, 0 if none), y its inverse
     uvec4 dispatch;        // x workgroups per row of the voxelize dispatch (work item = group.y · x + group.x),
-                           // y the most workgroups the occupied-voxel dispatch may have
+                           // y the most workgroups the occupied-voxel dispatch may have,
+                           // z 1 = the scene has MASK or BLEND materials: ACCUM_OPACITY is kept
 };
 
 VCT_SHARED_END

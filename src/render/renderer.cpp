@@ -89,7 +89,8 @@ void Renderer::setGeometry(const Scene& scene) {
             std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
     sceneGpu_ = std::make_unique<SceneGpu>(context_, local);
     voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
-    resize(settings_.image);  // the G-buffer pipeline depends on the scene's textures
+    resize(settings_.image);                             // the G-buffer pipeline depends on the scene's textures
+    if (shadowPass_) shadowPass_->useScene(*sceneGpu_);  // and so does the alpha-tested shadow pipeline
     stale_.voxels = true;
     staleShadowArrays_ = kAllShadowArrays;  // every shadow map shows the old geometry
     if (shadowPass_) setLights(lights_);    // shadow views are fitted to the scene's bounds
@@ -135,7 +136,7 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     if (!shadowPass_ || previous.sunLayers != shadowLayout_.sunLayers ||
         previous.localLayers != shadowLayout_.localLayers || previous.areaLayers != shadowLayout_.areaLayers) {
         if (shadowPass_) vkDeviceWaitIdle(context_.device);
-        shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_);
+        shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_, *sceneGpu_);
     }
     // Only the maps whose views moved are redrawn: moving the sun in tile-room redrew its 48 lamp
     // cube faces every frame.

@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 
+#include "alpha_coverage.h"
 #include "error.h"
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
@@ -21,6 +22,9 @@ namespace vct {
 namespace {
 
 static_assert(sizeof(Vertex) == sizeof(glsl::GpuVertex), "Vertex must match GpuVertex");
+static_assert(uint32_t(AlphaMode::Opaque) == glsl::ALPHA_OPAQUE && uint32_t(AlphaMode::Mask) == glsl::ALPHA_MASK &&
+                  uint32_t(AlphaMode::Blend) == glsl::ALPHA_BLEND,
+              "AlphaMode must match GpuMaterial::alphaMode");
 
 // Storage buffers are never empty (Vulkan forbids it) and hold at least one element.
 template <typename T>
@@ -80,7 +84,8 @@ void checkSceneCanBeRendered(const Scene& scene) {
         if (!finite(glm::vec3(color)) || !std::isfinite(color.a) || !finite(material.emission) ||
             !std::isfinite(material.metallic) || !std::isfinite(material.roughness) ||
             !std::isfinite(material.specularWeight) || !std::isfinite(material.normalScale) ||
-            !std::isfinite(material.occlusionStrength) || !finiteMapping(material))
+            !std::isfinite(material.occlusionStrength) || !std::isfinite(material.alphaCutoff) ||
+            !finiteMapping(material))
             fail("material " + std::to_string(i) + " ('" + material.name +
                  "') holds a value that is not a finite number");
     }
@@ -130,6 +135,13 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
             materialRanges.push_back({sortedMaterials[i], i * 3, 0});
         materialRanges.back().indexCount += 3;
     }
+    for (MaterialRange& range : materialRanges) {
+        range.alphaTested = scene.materials[range.material].alphaMode != AlphaMode::Opaque;
+        if (range.alphaTested) alphaTestedRanges.push_back(range);
+        else if (!opaqueRuns.empty() && opaqueRuns.back().firstIndex + opaqueRuns.back().indexCount == range.firstIndex)
+            opaqueRuns.back().indexCount += range.indexCount;
+        else opaqueRuns.push_back({range.firstIndex, range.indexCount});
+    }
     indices = uploadArray(context, sortedIndices, storage | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     triangleMaterials = uploadArray(context, sortedMaterials, storage);
 
@@ -138,7 +150,7 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         glsl::GpuMaterial gpu{};
         gpu.baseColorFactor = material.baseColorFactor;
         gpu.emission = glm::vec4(material.emission, 0.0f);
-        gpu.voxelEmission = glm::vec4(voxelEmission(scene, material), 0.0f);
+        gpu.voxelEmission = glm::vec4(voxelEmission(scene, material), voxelCoverage(scene, material));
         gpu.metallic = material.metallic;
         gpu.roughness = material.roughness;
         gpu.specularWeight = material.specularWeight;
@@ -149,6 +161,8 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
         gpu.normalScale = material.normalScale;
         gpu.occlusionTexture = material.occlusionTexture.index;
         gpu.occlusionStrength = material.occlusionStrength;
+        gpu.alphaMode = uint32_t(material.alphaMode);
+        gpu.alphaCutoff = material.alphaCutoff;
         gpu.baseColorTransform = textureTransform(material.baseColorTexture);
         gpu.emissiveTransform = textureTransform(material.emissiveTexture);
         gpu.metallicRoughnessTransform = textureTransform(material.metallicRoughnessTexture);

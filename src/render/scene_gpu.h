@@ -35,8 +35,18 @@ struct SceneGpu {
         uint32_t material;
         uint32_t firstIndex;
         uint32_t indexCount;
+        bool alphaTested = false;  // MASK or BLEND: its fragments may be discarded
     };
     std::vector<MaterialRange> materialRanges;
+    // For the shadow pass: the triangles of opaque materials as runs of consecutive ranges, each
+    // drawn with one depth-only call (one run for the whole scene when no material is alpha-tested),
+    // and the ranges of MASK and BLEND materials, whose base colour's alpha must be read.
+    struct IndexRun {
+        uint32_t firstIndex;
+        uint32_t indexCount;
+    };
+    std::vector<IndexRun> opaqueRuns;
+    std::vector<MaterialRange> alphaTestedRanges;
 
     // Colour textures, base colour and emissive (at least one: a white fallback), in descriptor set 1
     // of the G-buffer pass.

@@ -106,7 +106,8 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
     return layout;
 }
 
-ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings)
+ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings,
+                       const SceneGpu& scene)
     : context_(context) {
     auto makeArray = [&](uint32_t layers, uint32_t size, const char* name) {
         ImageDesc desc;
@@ -132,6 +133,19 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
     desc.depthFormat = kShadowFormat;
     desc.depthTest = true;
     pipeline = createGraphicsPipeline(context, desc);
+    useScene(scene);
+}
+
+void ShadowPass::useScene(const SceneGpu& scene) {
+    alphaPipeline = Pipeline();
+    if (scene.alphaTestedRanges.empty()) return;
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = "shadow_alpha.vert";
+    desc.fragmentShader = "shadow_alpha.frag";
+    desc.depthFormat = kShadowFormat;
+    desc.depthTest = true;
+    desc.fragmentSpecialization = {scene.textureCount()};  // the texture array's size, as in the G-buffer
+    alphaPipeline = createGraphicsPipeline(context_, desc, {scene.textureSetLayout});
 }
 
 ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after) {
@@ -169,12 +183,19 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
     }
 
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
-    DescriptorPush()
-        .buffer(0, scene.vertices.buffer)
-        .buffer(1, viewsBuffer)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+    // Opaque materials need no fragment shader; alpha-tested ones (if any) switch to the second
+    // pipeline after them in every layer, and back for the next layer.
+    const bool alphaTested = !scene.alphaTestedRanges.empty() && alphaPipeline.pipeline != VK_NULL_HANDLE;
+    auto bindOpaque = [&] {
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
+        DescriptorPush()
+            .buffer(0, scene.vertices.buffer)
+            .buffer(1, viewsBuffer)
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+    };
+    bindOpaque();
     vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    bool opaqueBound = true;
 
     // Unused arrays (no light of that kind) are cleared once so they sample as "lit".
     auto renderLayer = [&](GpuImage& maps, uint32_t layer, int viewIndex) {
@@ -196,8 +217,28 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
             vkCmdSetViewport(commands, 0, 1, &viewport);
             vkCmdSetScissor(commands, 0, 1, &scissor);
             const uint32_t index = uint32_t(viewIndex);
+            if (!opaqueBound) bindOpaque();
+            opaqueBound = true;
             vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(index), &index);
-            vkCmdDrawIndexed(commands, scene.indexCount, 1, 0, 0, 0);
+            for (const SceneGpu::IndexRun& run : scene.opaqueRuns)
+                vkCmdDrawIndexed(commands, run.indexCount, 1, run.firstIndex, 0, 0);
+            if (alphaTested) {
+                vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.pipeline);
+                DescriptorPush()
+                    .buffer(0, scene.vertices.buffer)
+                    .buffer(1, viewsBuffer)
+                    .buffer(2, scene.materials.buffer)
+                    .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.layout);
+                vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.layout, 1, 1,
+                                        &scene.textureSet, 0, nullptr);
+                opaqueBound = false;
+                for (const SceneGpu::MaterialRange& range : scene.alphaTestedRanges) {
+                    const uint32_t viewAndMaterial[2] = {index, range.material};
+                    vkCmdPushConstants(commands, alphaPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(viewAndMaterial),
+                                       viewAndMaterial);
+                    vkCmdDrawIndexed(commands, range.indexCount, 1, range.firstIndex, 0, 0);
+                }
+            }
         }
         vkCmdEndRendering(commands);
     };

@@ -50,7 +50,11 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
                            const Bounds& sceneBounds, const RenderSettings& settings);
 
 struct ShadowPass {
-    ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings);
+    ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings, const SceneGpu& scene);
+
+    // Makes the pipeline that draws `scene`'s alpha-tested materials (it reads their textures), or
+    // none when every material is opaque. Call it when the scene changes, with the GPU idle.
+    void useScene(const SceneGpu& scene);
 
     // Renders the views of the arrays in `redraw` (and of any never drawn) into their layers, and
     // leaves those arrays ready for sampling; the others keep their maps.
@@ -62,7 +66,8 @@ struct ShadowPass {
     GpuImage localMaps;
     GpuImage areaMaps;
     Sampler compareSampler;
-    Pipeline pipeline;
+    Pipeline pipeline;         // depth only: opaque materials
+    Pipeline alphaPipeline;    // MASK and BLEND materials: discards where the base colour's alpha says
     ShadowArraySet drawn = 0;  // arrays whose layouts are valid for sampling
 
 private:

@@ -19,15 +19,16 @@
 namespace vct {
 
 // Bytes a grid of resolution³ voxels needs on the GPU: the scene voxels (VoxelVolumes) and the
-// accumulation buffers; and the accumulation buffers alone.
-uint64_t voxelizeMemoryBytes(uint32_t resolution);
-uint64_t voxelizeAccumulationBytes(uint32_t resolution);
+// accumulation buffers; and the accumulation buffers alone. `alphaMaterials`: the scene has MASK or
+// BLEND materials (Scene::hasAlphaMaterials), for which the opacity channel is kept (voxelize.h).
+uint64_t voxelizeMemoryBytes(uint32_t resolution, bool alphaMaterials = false);
+uint64_t voxelizeAccumulationBytes(uint32_t resolution, bool alphaMaterials = false);
 
 // Throws a vct::Error naming the largest resolution that would fit when the grid needs more than
 // half of the device's largest device-local heap (the rest is left to the scene, the frame's
 // images and the radiance volume), or an accumulation buffer exceeds maxStorageBufferRange.
 void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
-                         const std::string& deviceName, uint32_t resolution);
+                         const std::string& deviceName, uint32_t resolution, bool alphaMaterials = false);
 
 // The order SceneGpu stores the triangles in (stable by material), checked against its material ranges.
 std::vector<uint32_t> gpuTriangleOrder(const Scene& scene, const SceneGpu& sceneGpu);

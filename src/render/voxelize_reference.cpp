@@ -78,6 +78,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
     result.count.assign(voxels, 0);
     result.emitters.assign(voxels, 0);
     result.albedo.assign(voxels, glm::dvec3(0.0));
+    result.opacity.assign(voxels, 0.0);
     result.normal.assign(voxels, glm::dvec3(0.0));
     result.emission.assign(voxels, glm::dvec3(0.0));
     result.decisionMargin.assign(voxels, std::numeric_limits<double>::infinity());
@@ -86,6 +87,8 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
         if (isDegenerateTriangle(scene, t)) continue;
         const TriangleD triangle = gridTriangle(scene, grid, t);
         const Material& material = scene.materials[scene.triangleMaterials[t]];
+        const double coverage = std::clamp(double(voxelCoverage(scene, material)), 0.0, 1.0);
+        if (!(coverage > 0.0)) continue;
         const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
         const glm::dvec3 albedo = glm::clamp(glm::dvec3(glm::vec3(material.baseColorFactor)), 0.0, 1.0);
         const glm::dvec3 emission = glm::max(glm::dvec3(voxelEmission(scene, material)), 0.0);
@@ -100,6 +103,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
                     if (separation > 0.0) continue;
                     ++result.count[i];
                     result.albedo[i] += albedo;
+                    result.opacity[i] = std::max(result.opacity[i], coverage);
                     result.normal[i] += normal;
                     if (glm::max(emission.x, glm::max(emission.y, emission.z)) > 0.0) {
                         ++result.emitters[i];

@@ -1,6 +1,7 @@
 // The CPU twin of the voxelize pass, in double precision: the specification the GPU is tested against.
 // The same conservative separating-axis test (see shaders_glsl/triangle_box.glsl), the same
 // degenerate-triangle rule and the same attributes, averaged exactly instead of in fixed point.
+// Triangles of a material with voxelCoverage 0 touch nothing, as on the GPU.
 #pragma once
 
 #include <array>
@@ -45,6 +46,7 @@ struct VoxelReference {
     std::vector<uint32_t> count;       // triangles touching each voxel, index x + N·(y + N·z)
     std::vector<uint32_t> emitters;    // emitting triangles among them
     std::vector<glm::dvec3> albedo;    // mean linear base colour factor (0 where count = 0)
+    std::vector<double> opacity;       // the largest voxelCoverage of the touching triangles (0 where none)
     std::vector<glm::dvec3> normal;    // mean geometric unit normal, not renormalized
     std::vector<glm::dvec3> emission;  // mean emission of the emitting triangles
     // How close the voxel came to flipping: the smallest |separation| of any triangle tested

@@ -503,6 +503,15 @@ struct Converter {
         return found->second.Get(key).GetNumberAsDouble();
     }
 
+    // glTF's alphaMode names; another is read as OPAQUE (the default) with a warning.
+    AlphaMode alphaMode(const std::string& path, const std::string& name) {
+        if (name == "MASK") return AlphaMode::Mask;
+        if (name == "BLEND") return AlphaMode::Blend;
+        if (name != "OPAQUE")
+            warn(path + ".alphaMode", "'" + name + "' is not a glTF alpha mode; the material is drawn opaque");
+        return AlphaMode::Opaque;
+    }
+
     void convertMaterials() {
         for (size_t i = 0; i < model.materials.size(); ++i) {
             const tinygltf::Material& source = model.materials[i];
@@ -534,6 +543,8 @@ struct Converter {
             if (source.emissiveFactor.size() == 3)
                 material.emission = glm::vec3(glm::make_vec3(source.emissiveFactor.data()) * strength);
             material.doubleSided = source.doubleSided;
+            material.alphaMode = alphaMode(path, source.alphaMode);
+            material.alphaCutoff = float(source.alphaCutoff);
             scene.materials.push_back(std::move(material));
         }
     }

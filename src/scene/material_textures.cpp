@@ -88,4 +88,24 @@ glm::vec3 voxelEmission(const Scene& scene, const Material& material) {
     return material.emission * meanLinearColor(scene.textures[size_t(texture)]);
 }
 
+float voxelCoverage(const Scene& scene, const Material& material) {
+    if (material.alphaMode == AlphaMode::Opaque) return 1.0f;
+    const float factor = material.baseColorFactor.a;
+    const int index = material.baseColorTexture.index;
+    const Texture* texture =
+        index >= 0 && size_t(index) < scene.textures.size() ? &scene.textures[size_t(index)] : nullptr;
+    const size_t texels = texture ? size_t(texture->width) * texture->height : 0;
+    if (texels == 0 || texture->rgba8.size() < texels * 4) {
+        if (material.alphaMode == AlphaMode::Mask) return factor >= material.alphaCutoff ? 1.0f : 0.0f;
+        return std::clamp(factor, 0.0f, 1.0f);
+    }
+    double sum = 0.0;
+    for (size_t i = 0; i < texels; ++i) {
+        const float alpha = float(texture->rgba8[4 * i + 3]) / 255.0f * factor;  // as the GPU's UNORM read
+        sum += material.alphaMode == AlphaMode::Mask ? (alpha >= material.alphaCutoff ? 1.0 : 0.0)
+                                                     : std::clamp(double(alpha), 0.0, 1.0);
+    }
+    return float(sum / double(texels));
+}
+
 }  // namespace vct

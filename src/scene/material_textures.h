@@ -35,4 +35,11 @@ glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv
 // evenly and faintly, with the same total power (for a texture mapped once over the surface).
 glm::vec3 voxelEmission(const Scene& scene, const Material& material);
 
+// The share of the material's surface the voxelizer sees, in [0, 1]: its coverage (base colour
+// alpha, factor × texture) as a mean over the texture, the way voxelEmission treats emission.
+// Opaque: 1. Mask: the fraction of the texels whose alpha reaches alphaCutoff (1 or 0 without a
+// texture). Blend: the mean alpha. An approximation: a texture not mapped once over the surface (an
+// atlas, a repeat) gives every voxel of the surface the whole texture's share.
+float voxelCoverage(const Scene& scene, const Material& material);
+
 }  // namespace vct

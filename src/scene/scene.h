@@ -37,6 +37,11 @@ struct TextureReference {
     glm::vec2 scale{1.0f};
 };
 
+// glTF alphaMode (§3.9.4): what the base colour's alpha, the factor's times the texture's, means.
+// Opaque ignores it; Mask makes the surface a hole where it is below alphaCutoff; Blend makes it
+// that fraction of the surface (rendered as the README's glTF table says).
+enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
+
 // glTF pbrMetallicRoughness, plus emission and KHR_materials_specular's weight.
 struct Material {
     std::string name;
@@ -61,6 +66,8 @@ struct Material {
     glm::vec3 emission{0.0f};          // emissiveFactor × KHR_materials_emissive_strength: radiance
     TextureReference emissiveTexture;  // sRGB; multiplies `emission`
     bool doubleSided = false;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;  // Mask: where alpha < alphaCutoff there is no surface (glTF default 0.5)
 };
 
 // How texture coordinates outside [0, 1] read a texture (glTF sampler wrapS / wrapT).
@@ -129,6 +136,12 @@ struct Scene {
 
     size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;
+    // Whether any material is MASK or BLEND: only then does the voxelizer keep an opacity channel.
+    bool hasAlphaMaterials() const {
+        for (const Material& material : materials)
+            if (material.alphaMode != AlphaMode::Opaque) return true;
+        return false;
+    }
 };
 
 // Computes the axis-aligned bounds of all vertices (zero bounds for an empty scene).

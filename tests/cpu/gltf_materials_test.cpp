@@ -136,6 +136,32 @@ TEST(MaterialTextures, VoxelEmissionIsTheEmissionTimesTheTexturesMeanLinearColou
     EXPECT_NEAR(meanLinearColor(grey).g, 0.2158605f, 1e-6f);
 }
 
+TEST(AlphaMode, IsReadWithItsCutoffAndDefaultsToOpaqueAtHalf) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    gltf.document["materials"] = json::array({json::object(),
+                                              {{"alphaMode", "MASK"}, {"alphaCutoff", 0.25}},
+                                              {{"alphaMode", "BLEND"}},
+                                              {{"alphaMode", "OPAQUE"}}});
+    const Scene scene = loadBuilt(gltf);
+    ASSERT_EQ(scene.materials.size(), 4u);
+    EXPECT_EQ(scene.materials[0].alphaMode, AlphaMode::Opaque);
+    EXPECT_EQ(scene.materials[0].alphaCutoff, 0.5f);
+    EXPECT_EQ(scene.materials[1].alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(scene.materials[1].alphaCutoff, 0.25f);
+    EXPECT_EQ(scene.materials[2].alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(scene.materials[3].alphaMode, AlphaMode::Opaque);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
+TEST(AlphaMode, AnUnknownModeIsOpaqueWithAWarningNamingIt) {
+    GltfBuilder gltf = test::quadFacingCamera();
+    gltf.document["materials"][0] = {{"alphaMode", "CUTOUT"}};
+    const Scene scene = loadBuilt(gltf);
+    EXPECT_EQ(scene.materials[0].alphaMode, AlphaMode::Opaque);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("materials[0].alphaMode: 'CUTOUT'"), std::string::npos) << scene.warnings[0];
+}
+
 TEST(DefaultLight, SceneWithoutLightGetsOneSunAndASkyNamedInOneWarning) {
     GltfBuilder gltf = test::quadFacingCamera();
     Scene scene = loadBuilt(gltf);

@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <numeric>
@@ -22,6 +23,7 @@
 #include "render/voxelize_pass.h"
 #include "render/voxelize_reference.h"
 #include "scene/load.h"
+#include "scene/material_textures.h"
 
 namespace vct {
 namespace {
@@ -133,8 +135,10 @@ Comparison compareWithTwin(const VoxelImages& gpu, const VoxelReference& twin, d
         }
         std::ostringstream problem;
         const glm::vec4 albedo = gpu.albedoOpacity[i], normal = gpu.normal[i], emission = gpu.emission[i];
-        const float opacity = twin.count[i] > 0 ? 1.0f : 0.0f;
-        if (albedo.a != opacity) problem << "opacity " << albedo.a << ", the twin says " << opacity;
+        // UNORM8, at least 1/255 where occupied (voxel_resolve.comp).
+        const float opacity = twin.count[i] > 0 ? std::max(float(twin.opacity[i]), 1.0f / 255.0f) : 0.0f;
+        if (std::abs(albedo.a - opacity) > kAlbedoTolerance || (albedo.a > 0.0f) != (twin.count[i] > 0))
+            problem << "opacity " << albedo.a << ", the twin says " << opacity;
         else if (normal.w != float(twin.count[i]))
             problem << "count " << normal.w << ", the twin says " << twin.count[i];
         for (int c = 0; c < 3 && problem.str().empty(); ++c) {
@@ -599,6 +603,62 @@ TEST_F(Voxelize, AnEmissiveTextureGivesTheFactorTimesItsMeanColour) {
     EXPECT_NEAR(gpu.emission[voxel].g, 1.0f, kEmissionTolerance * 3.0f);
     EXPECT_NEAR(gpu.emission[voxel].b, 0.5f, kEmissionTolerance * 3.0f);
     expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+}
+
+// A rectangle of two triangles in the plane z = `z` (a voxel centre plane: it touches that layer
+// of voxels only) over voxels x, y ∈ [2, 5], its edges and diagonal clear of the voxels' corners.
+std::vector<TriangleF> squareAt(float z) {
+    const glm::vec3 a(2.3f, 2.2f, z), b(5.8f, 2.2f, z), c(5.8f, 5.7f, z), d(2.3f, 5.7f, z);
+    return {{a, b, c}, {a, c, d}};
+}
+
+TEST_F(Voxelize, AlphaMaterialsMakeVoxelsAsOpaqueAsTheShareOfTheSurfaceThatIsThere) {
+    // Layer 2: MASK through a texture opaque in 5 of 8 texels (alpha 255, 200, 128, 128, 128, 127,
+    // 0, 0; cutoff 0.5: 128/255 passes, 127/255 does not) → 5/8. Layer 5: BLEND of alpha 0.5
+    // (factor) → 1/2. Layer 8: MASK with a factor of alpha 0.3 below its cutoff → no voxel. Layer
+    // 11: opaque and the 5/8 mask sharing the voxels → 1, the largest.
+    std::vector<TriangleF> triangles;
+    std::vector<uint32_t> materials;
+    for (auto [z, material] : {std::pair{2.5f, 1u}, {5.5f, 2u}, {8.5f, 3u}, {11.5f, 0u}, {11.5f, 1u}}) {
+        for (const TriangleF& triangle : squareAt(z)) triangles.push_back(triangle);
+        materials.insert(materials.end(), {material, material});
+    }
+    Scene scene = makeScene(triangles, materials, {{}, {}, {}, {}});
+    Texture texture;
+    texture.width = 8;
+    texture.height = 1;
+    for (uint8_t alpha : {255, 200, 128, 128, 128, 127, 0, 0})
+        texture.rgba8.insert(texture.rgba8.end(), {255, 255, 255, alpha});
+    scene.textures.push_back(texture);
+    scene.materials[1].alphaMode = AlphaMode::Mask;
+    scene.materials[1].baseColorTexture.index = 0;
+    scene.materials[2].alphaMode = AlphaMode::Blend;
+    scene.materials[2].baseColorFactor.a = 0.5f;
+    scene.materials[3].alphaMode = AlphaMode::Mask;
+    scene.materials[3].baseColorFactor.a = 0.3f;
+    EXPECT_EQ(voxelCoverage(scene, scene.materials[1]), 5.0f / 8.0f);
+
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(16));
+    auto opacityOfLayer = [&](uint32_t z) {
+        float lowest = 1.0f, highest = 0.0f;
+        for (uint32_t y = 2; y < 6; ++y)
+            for (uint32_t x = 2; x < 6; ++x) {
+                const float opacity = gpu.albedoOpacity[x + 16 * (y + 16 * z)].a;
+                lowest = std::min(lowest, opacity);
+                highest = std::max(highest, opacity);
+            }
+        EXPECT_EQ(lowest, highest) << "layer " << z << " should be even";
+        return lowest;
+    };
+    const float masked = opacityOfLayer(2), blended = opacityOfLayer(5), hidden = opacityOfLayer(8),
+                shared = opacityOfLayer(11);
+    std::printf("voxel opacity: MASK 5/8 %.4f, BLEND 1/2 %.4f, MASK below cutoff %.4f, with an opaque one %.4f\n",
+                masked, blended, hidden, shared);
+    EXPECT_NEAR(masked, 5.0f / 8.0f, kAlbedoTolerance);
+    EXPECT_NEAR(blended, 0.5f, kAlbedoTolerance);
+    EXPECT_EQ(hidden, 0.0f);
+    EXPECT_EQ(shared, 1.0f);
+    expectMatchesTwin(scene, exactGrid(16), kAmbiguousMargin);
 }
 
 TEST_F(Voxelize, SixtyFiveThousandTrianglesInOneVoxelDoNotOverflow) {

@@ -212,7 +212,7 @@ bool hitsBox(const PreparedRay& r, const BvhNode& node, float tMax, float& tEnte
 }
 
 // Depth-first traversal, nearer child first; stops at the first hit when `anyHitOnly`.
-std::optional<RayHit> traverse(const Bvh& bvh, const Ray& ray, bool anyHitOnly) {
+std::optional<RayHit> traverse(const Bvh& bvh, const Ray& ray, bool anyHitOnly, const HitFilter& filter) {
     if (bvh.nodes.empty()) return std::nullopt;
     const PreparedRay r = prepare(ray);
     float tMax = ray.tMax;
@@ -229,6 +229,7 @@ std::optional<RayHit> traverse(const Bvh& bvh, const Ray& ray, bool anyHitOnly) 
                 std::optional<RayHit> hit = intersect(r, bvh.triangles[i], tMax);
                 if (!hit) continue;
                 hit->triangle = bvh.triangleIds[i];
+                if (bvh.alphaTested[i] && filter && !filter(*hit)) continue;
                 best = hit;
                 tMax = hit->t;
                 if (anyHitOnly) return best;
@@ -285,12 +286,18 @@ Bvh buildBvh(const Scene& scene) {
         bvh.triangles.push_back(
             {scene.vertices[index[0]].position, scene.vertices[index[1]].position, scene.vertices[index[2]].position});
         bvh.triangleIds.push_back(primitive.id);
+        const Material& material = scene.materials[scene.triangleMaterials[primitive.id]];
+        bvh.alphaTested.push_back(material.alphaMode != AlphaMode::Opaque ? 1 : 0);
     }
     return bvh;
 }
 
-std::optional<RayHit> closestHit(const Bvh& bvh, const Ray& ray) { return traverse(bvh, ray, false); }
+std::optional<RayHit> closestHit(const Bvh& bvh, const Ray& ray, const HitFilter& filter) {
+    return traverse(bvh, ray, false, filter);
+}
 
-bool anyHit(const Bvh& bvh, const Ray& ray) { return traverse(bvh, ray, true).has_value(); }
+bool anyHit(const Bvh& bvh, const Ray& ray, const HitFilter& filter) {
+    return traverse(bvh, ray, true, filter).has_value();
+}
 
 }  // namespace vct::pt

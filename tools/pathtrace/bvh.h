@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -47,13 +48,20 @@ struct Bvh {
     std::vector<BvhNode> nodes;                // nodes[0] is the root
     std::vector<TrianglePositions> triangles;  // in leaf order
     std::vector<uint32_t> triangleIds;         // the Scene's index of each entry of `triangles`
+    // 1 where the entry's material is MASK or BLEND: only its hits are put to a HitFilter, so a scene
+    // of opaque materials is traversed as fast as without one.
+    std::vector<uint8_t> alphaTested;
 };
+
+// Asked about each hit on an alpha-tested triangle (RayHit::triangle set): false lets the ray pass
+// through it, as through a cut-out (glTF alphaMode). Empty: every hit counts.
+using HitFilter = std::function<bool(const RayHit&)>;
 
 // Zero-area triangles are left out: no ray can hit them.
 Bvh buildBvh(const Scene& scene);
 
-std::optional<RayHit> closestHit(const Bvh& bvh, const Ray& ray);
+std::optional<RayHit> closestHit(const Bvh& bvh, const Ray& ray, const HitFilter& filter = {});
 // True when anything lies on the ray between 0 and tMax (shadow rays).
-bool anyHit(const Bvh& bvh, const Ray& ray);
+bool anyHit(const Bvh& bvh, const Ray& ray, const HitFilter& filter = {});
 
 }  // namespace vct::pt

@@ -33,6 +33,7 @@ LinearTexture decodeTexture(const Texture& texture) {
         texture.rgba8.size() < size_t(texture.width) * texture.height * 4) {
         linear.width = linear.height = 1;
         linear.texels = {glm::vec3(1.0f)};  // a missing image leaves the factor alone
+        linear.alpha = {1.0f};
         return linear;
     }
     std::array<float, 256> table;  // colour textures are sRGB-encoded, data textures linear
@@ -43,9 +44,11 @@ LinearTexture decodeTexture(const Texture& texture) {
     linear.wrapT = texture.wrapT;
     linear.nearestMagnification = texture.nearestMagnification;
     linear.texels.resize(size_t(texture.width) * texture.height);
+    linear.alpha.resize(linear.texels.size());
     for (size_t i = 0; i < linear.texels.size(); ++i) {
         const uint8_t* texel = &texture.rgba8[4 * i];
         linear.texels[i] = glm::vec3(table[texel[0]], table[texel[1]], table[texel[2]]);
+        linear.alpha[i] = float(texel[3]) / 255.0f;  // alpha is linear in every format
     }
     return linear;
 }
@@ -53,11 +56,12 @@ LinearTexture decodeTexture(const Texture& texture) {
 // Bilinear filtering (nearest where the sampler magnifies so), wrapped as the texture's sampler
 // says; uv (0, 0) is the image's top-left corner and texel centres lie at (i + ½) / size. Many
 // paths average over each pixel, so no mip level is needed: the pixel's mean is the filtered one.
-glm::vec3 sampleTexture(const LinearTexture& texture, float u, float v) {
-    if (!std::isfinite(u) || !std::isfinite(v)) return texture.texels[0];
+template <typename T>
+T sampleTexels(const LinearTexture& texture, const std::vector<T>& texels, float u, float v) {
+    if (!std::isfinite(u) || !std::isfinite(v)) return texels[0];
     auto at = [&](double ix, double iy) {
-        return texture.texels[size_t(wrapTexel(iy, texture.height, texture.wrapT)) * texture.width +
-                              wrapTexel(ix, texture.width, texture.wrapS)];
+        return texels[size_t(wrapTexel(iy, texture.height, texture.wrapT)) * texture.width +
+                      wrapTexel(ix, texture.width, texture.wrapS)];
     };
     const double x = double(u) * texture.width, y = double(v) * texture.height;
     if (texture.nearestMagnification) return at(std::floor(x), std::floor(y));
@@ -65,6 +69,10 @@ glm::vec3 sampleTexture(const LinearTexture& texture, float u, float v) {
     const float tx = float(x - 0.5 - x0), ty = float(y - 0.5 - y0);
     return glm::mix(glm::mix(at(x0, y0), at(x0 + 1.0, y0), tx), glm::mix(at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0), tx),
                     ty);
+}
+
+glm::vec3 sampleTexture(const LinearTexture& texture, float u, float v) {
+    return sampleTexels(texture, texture.texels, u, v);
 }
 
 // A point on a triangle, normals unit and as authored (not yet turned towards any viewer).
@@ -242,19 +250,50 @@ Ray spawnRay(const SurfacePoint& s, const glm::vec3& direction) {
     return Ray{offsetRayOrigin(s.position, side), direction, FLT_MAX};
 }
 
+// Whether a ray stops at a hit on an alpha-tested triangle (glTF alphaMode), from the base colour's
+// alpha there (factor × texture, read as the base colour is): MASK where it reaches the cutoff;
+// BLEND with probability alpha, stochastic transmission, whose mean lets 1 − alpha of the light
+// through (the renderer's screen-door pattern, alpha_coverage.h, averaged over a pixel).
+bool stopsRay(const PathTracer& tracer, const RayHit& hit, Rng& rng) {
+    const Scene& scene = *tracer.scene;
+    const uint32_t materialIndex = scene.triangleMaterials[hit.triangle];
+    const Material& material = scene.materials[materialIndex];
+    float alpha = material.baseColorFactor.a;
+    if (hasTexture(tracer, material.baseColorTexture)) {
+        const float b0 = 1.0f - hit.b1 - hit.b2;
+        const Vertex* v[3];
+        for (uint32_t corner = 0; corner < 3; ++corner)
+            v[corner] = &scene.vertices[scene.indices[3 * hit.triangle + corner]];
+        const glm::vec2 texCoord0 = b0 * glm::vec2(v[0]->u, v[0]->v) + hit.b1 * glm::vec2(v[1]->u, v[1]->v) +
+                                    hit.b2 * glm::vec2(v[2]->u, v[2]->v);
+        const glm::vec2 texCoord1 = b0 * v[0]->uv1 + hit.b1 * v[1]->uv1 + hit.b2 * v[2]->uv1;
+        const glm::vec2 uv =
+            glsl::transformedTexCoord(tracer.textureTransforms[materialIndex].baseColor, texCoord0, texCoord1);
+        const LinearTexture& texture = tracer.textures[size_t(material.baseColorTexture.index)];
+        alpha *= sampleTexels(texture, texture.alpha, uv.x, uv.y);
+    }
+    if (material.alphaMode == AlphaMode::Mask) return alpha >= material.alphaCutoff;
+    if (material.alphaMode == AlphaMode::Blend) return rng.uniform() < alpha;
+    return true;
+}
+
+HitFilter alphaFilter(const PathTracer& tracer, Rng& rng) {
+    return [&tracer, &rng](const RayHit& hit) { return stopsRay(tracer, hit, rng); };
+}
+
 // Nothing between s and `target` (itself offset off its own surface by the caller, or a light).
-bool unoccluded(const PathTracer& tracer, const SurfacePoint& s, const glm::vec3& target) {
+bool unoccluded(const PathTracer& tracer, const SurfacePoint& s, const glm::vec3& target, Rng& rng) {
     Ray ray = spawnRay(s, glm::normalize(target - s.position));
     const glm::vec3 toTarget = target - ray.origin;
     const float distance = glm::length(toTarget);
     if (!(distance > 0.0f)) return true;
     ray.direction = toTarget / distance;
     ray.tMax = distance;
-    return !anyHit(tracer.bvh, ray);
+    return !anyHit(tracer.bvh, ray, alphaFilter(tracer, rng));
 }
 
 // Light from the punctual lights, by KHR_lights_punctual's falloff (shaders_glsl/lights.h).
-glm::vec3 punctualLight(const PathTracer& tracer, const SurfacePoint& s) {
+glm::vec3 punctualLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rng) {
     glm::vec3 sum(0.0f);
     for (const Light& light : tracer.scene->lights) {
         glm::vec3 L;
@@ -274,8 +313,9 @@ glm::vec3 punctualLight(const PathTracer& tracer, const SurfacePoint& s) {
         }
         const glm::vec3 reflected = reflectedTowards(s, L) * irradiance;
         if (isBlack(reflected) || !std::isfinite(L.x + L.y + L.z)) continue;
-        const bool visible = light.type == LightType::Directional ? !anyHit(tracer.bvh, spawnRay(s, L))
-                                                                  : unoccluded(tracer, s, light.position);
+        const bool visible = light.type == LightType::Directional
+                                 ? !anyHit(tracer.bvh, spawnRay(s, L), alphaFilter(tracer, rng))
+                                 : unoccluded(tracer, s, light.position, rng);
         if (visible) sum += reflected;
     }
     return sum;
@@ -306,7 +346,7 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
     if (isBlack(reflected)) return glm::vec3(0.0f);
     const glm::vec3 lightSide =
         glm::dot(light.geometricNormal, L) < 0.0f ? light.geometricNormal : -light.geometricNormal;
-    if (!unoccluded(tracer, s, offsetRayOrigin(light.position, lightSide))) return glm::vec3(0.0f);
+    if (!unoccluded(tracer, s, offsetRayOrigin(light.position, lightSide), rng)) return glm::vec3(0.0f);
 
     const float lightPdf = emitters.areaPdf[triangle] * distanceSquared / cosLight;
     const float weight = powerHeuristic(lightPdf, bsdfPdf(s.material, s.shadingNormal, s.toViewer, L));
@@ -357,7 +397,7 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
     // One interaction past maxDepth: emission that BRDF sampling finds there belongs to the light
     // the last gathering vertex received (its other half is that vertex's light sampling).
     for (uint32_t depth = 1; depth <= tracer.maxDepth + 1; ++depth) {
-        const std::optional<RayHit> hit = closestHit(tracer.bvh, ray);
+        const std::optional<RayHit> hit = closestHit(tracer.bvh, ray, alphaFilter(tracer, rng));
         if (!hit) {
             // The sky: seen by the camera it is direct light, as an emitter seen is; on a surface
             // it is indirect light, which is where the renderer's cones gather it. Uniform, so
@@ -385,7 +425,7 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
         }
         if (!gathers) break;
         if (depth == 1 ? wantDirect : wantIndirect) {
-            radiance += throughput * punctualLight(tracer, s);
+            radiance += throughput * punctualLight(tracer, s, rng);
             if (tracer.sampleEmitters) radiance += throughput * emissiveLight(tracer, s, rng);
         }
         // Direct light alone goes one step further only to find emitters by BRDF sampling.

@@ -7,8 +7,10 @@
 //   a surface when the shading normal bends away from it).
 // - Emission (Material::emission × the sRGB-decoded emissive texture, radiance) leaves only the
 //   front face: the side the interpolated vertex normal points to.
-// - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Alpha is
-//   ignored (all surfaces are opaque). There is no environment light.
+// - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Its alpha
+//   (factor × texture) is the coverage of glTF's alphaMode: a MASK surface is not there where it is
+//   below alphaCutoff, a BLEND surface stops a ray with probability alpha (stochastic transmission),
+//   for camera, path and shadow rays alike; an emissive triangle's holes still glow when sampled.
 // - Each texture is read at the texture-coordinate set its material names, through its
 //   KHR_texture_transform (shaders_glsl/texture_transform.h, as on the GPU). The occlusion texture
 //   is ignored: paths find the occlusion it stands for themselves.
@@ -38,6 +40,7 @@ enum class Component { Full, Direct, Indirect };
 struct LinearTexture {
     uint32_t width = 0, height = 0;
     std::vector<glm::vec3> texels;  // linear RGB, top row first
+    std::vector<float> alpha;       // the same texels' alpha (coverage, glTF alphaMode)
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
     bool nearestMagnification = false;
 };
