@@ -96,7 +96,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     const uint32_t groupLimit = context_.properties.limits.maxComputeWorkGroupCount[0];
-    struct {
+    struct {  // diffuse_reproject.comp's Push block
         glm::mat4 lastViewProjection;
         uint32_t groupLimit, refreshPhase, haveHistory;
     } const reuse{lastViewProjection_, groupLimit, frameCount_ % kRefreshPeriod, haveHistory_ ? 1u : 0u};
