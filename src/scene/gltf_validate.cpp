@@ -398,6 +398,7 @@ struct Validator {
             checkTextureReference(path + ".normalTexture", material.normalTexture);
             checkTextureReference(path + ".occlusionTexture", material.occlusionTexture);
             checkNumber(path + ".occlusionTexture.strength", material.occlusionTexture.strength, 0.0, 1.0);
+            checkNonNegative(path + ".alphaCutoff", material.alphaCutoff);  // glTF: minimum 0
             checkExtensionNumber(material.extensions, path, "KHR_materials_emissive_strength", "emissiveStrength", 0.0,
                                  std::numeric_limits<double>::max());
             const double emission =

@@ -271,6 +271,12 @@ TEST(GltfValidation, MaterialFactorOutOfRangeIsRefused) {
     expectRefused(gltf, "materials[0].pbrMetallicRoughness.roughnessFactor: 7 is outside [0, 1]");
 }
 
+TEST(GltfValidation, NegativeAlphaCutoffIsRefused) {
+    GltfBuilder gltf = test::triangleScene();
+    gltf.document["materials"] = json::array({{{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}}});
+    expectRefused(gltf, "materials[0].alphaCutoff: -0.5 is negative");
+}
+
 TEST(GltfValidation, PrimitiveNamingAMissingMaterialIsRefused) {
     GltfBuilder gltf = test::triangleScene();
     gltf.document["meshes"][0]["primitives"][0]["material"] = 2;
