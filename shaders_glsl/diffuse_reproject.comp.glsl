@@ -42,8 +42,8 @@ void main() {
     imageStore(representativeNormals, texel, vec4(normal, 0.0f));
     vec4 light;
     if (haveHistory != 0u && !refreshes(texel, refreshPhase) &&
-        lastLight(lastViewProjection, lastGathered, lastRepresentatives, lastRepresentativeNormals, position, normal,
-                  light)) {
+        lastLight(lastViewProjection, lastGathered, lastRepresentatives, lastRepresentativeNormals, true, position,
+                  normal, light)) {
         imageStore(gathered, texel, light);
         return;
     }

@@ -15,7 +15,15 @@ layout(set = 0, binding = 7) uniform sampler2D gNormal;
 layout(set = 0, binding = 8) uniform sampler2D gathered;
 layout(set = 0, binding = 9) uniform sampler2D representatives;
 layout(set = 0, binding = 10) uniform sampler2D representativeNormals;
-layout(push_constant) uniform Push { uint groupLimit; };
+layout(set = 0, binding = 12) uniform sampler2D lastDiffuse;
+layout(set = 0, binding = 13) uniform sampler2D lastPosition;  // the last frame's G-buffer
+layout(set = 0, binding = 14) uniform sampler2D lastNormal;
+layout(push_constant) uniform Push {
+    mat4 lastViewProjection;
+    uint groupLimit;
+    uint refreshPhase;
+    uint haveHistory;  // 0: every sample that cannot be upsampled traces
+};
 
 #include "reduced_diffuse.glsl"
 
@@ -32,6 +40,13 @@ void main() {
                                         reducedCoordinate(vec2(pixel)), positionMaterial.xyz, normal);
     if (blend.weight > UPSAMPLE_MIN_WEIGHT) {
         imageStore(diffuse, pixel, blend.sum / blend.weight);
+        return;
+    }
+    vec4 light;
+    if (haveHistory != 0u && !refreshes(pixel, refreshPhase) &&
+        lastLight(lastViewProjection, lastDiffuse, lastPosition, lastNormal, false, positionMaterial.xyz, normal,
+                  light)) {
+        imageStore(diffuse, pixel, light);
         return;
     }
     uint slot = atomicAdd(fallback.count, 1u);

@@ -11,15 +11,15 @@
 //   3. diffuse_upsample.comp blends, for every sample, the four representatives around it,
 //      bilinearly, keeping those on the sample's own surface: facing the same way and within half
 //      a voxel of its tangent plane. Where those carry less than half of the weight (an edge, a
-//      corner, a thin object), it lists the sample instead: near a concave corner the far side is
-//      rejected, and renormalizing over the near side alone would carry its brighter light into
-//      the corner (+1.3 % on the Cornell box at a quarter).
-//   4. diffuse_trace_list.comp traces the listed samples' own cones, every frame. (Reusing their
-//      last light as well, checked against the last frame's G-buffer, traced a quarter as many
-//      but measured no faster on lavapipe, in interleaved runs at 1280×720, so it was left out.)
-// The shading pass then reads one texel per sample. Without history every block traces, and the
-// image is the same as without reuse; a still view is the same to rounding; light that moves
-// reaches every block within four frames.
+//      corner, a thin object), the sample takes its own light of the last frame as step 1 does
+//      (from the last frame's per-sample light and G-buffer), a quarter of them tracing anew each
+//      frame, or is listed: near a concave corner the far side is rejected, and renormalizing over
+//      the near side alone would carry its brighter light into the corner (+1.3 % on the Cornell
+//      box at a quarter).
+//   4. diffuse_trace_list.comp traces the listed samples' own cones.
+// The shading pass then reads one texel per sample. Without history every block and edge sample
+// traces, and the image is the same as without reuse; a still view is the same to rounding; light
+// that moves reaches every block and sample within four frames.
 // Requires: frame (FrameConstants).
 #ifndef VCT_REDUCED_DIFFUSE_GLSL
 #define VCT_REDUCED_DIFFUSE_GLSL
@@ -45,7 +45,8 @@ vec2 reducedCoordinate(vec2 samplePosition) {
 uint packSample(ivec2 sample_) { return uint(sample_.x) | (uint(sample_.y) << 16u); }
 ivec2 unpackSample(uint packed) { return ivec2(packed & 0xffffu, packed >> 16u); }
 
-// The light (`light`) of the four representatives around reduced coordinate `q`, bilinearly weighted, each kept as far as it (`positions`: xyz, w ≥ 0.5 where there is a surface;
+// The light (`light`) of the four samples or representatives around `q` (in their image's texels),
+// bilinearly weighted, each kept as far as it (`positions`: xyz, w ≥ 0.5 where there is a surface;
 // `normals`) lies on the surface at `position` facing `normal`. Returns Σ w·light (rgba) and Σ w.
 struct SurfaceBlend {
     vec4 sum;
@@ -75,22 +76,24 @@ SurfaceBlend blendOnSurface(sampler2D light, sampler2D positions, sampler2D norm
     return blend;
 }
 
-// Whether the reduced texel at `coordinate` traces anew this frame whatever its history: a
+// Whether the reduced texel or the sample at `coordinate` traces anew this frame whatever its history: a
 // quarter of them each frame, in turn.
 bool refreshes(ivec2 coordinate, uint refreshPhase) {
     return uint((coordinate.x & 1) + 2 * (coordinate.y & 1)) == refreshPhase;
 }
 
 // The last frame's light at `position` on the surface facing `normal`, from the last frame's
-// representatives (their `light`, `positions` and `normals`), where the last frame saw that surface.
-bool lastLight(mat4 lastViewProjection, sampler2D light, sampler2D positions, sampler2D normals, vec3 position,
-               vec3 normal, out vec4 result) {
+// samples (reduced: representatives; their `light`, `positions` and `normals`), where the last
+// frame saw that surface.
+bool lastLight(mat4 lastViewProjection, sampler2D light, sampler2D positions, sampler2D normals, bool reduced,
+               vec3 position, vec3 normal, out vec4 result) {
     vec4 clip = lastViewProjection * vec4(position, 1.0f);
     if (clip.w <= 0.0f) return false;  // behind the last camera
     vec2 samplePosition = (clip.xy / clip.w * 0.5f + 0.5f) * frame.renderSize - 0.5f;
     if (any(lessThan(samplePosition, vec2(-0.5f))) || any(greaterThan(samplePosition, frame.renderSize - 0.5f)))
         return false;  // off the last frame's image
-    SurfaceBlend blend = blendOnSurface(light, positions, normals, reducedCoordinate(samplePosition), position, normal);
+    vec2 q = reduced ? reducedCoordinate(samplePosition) : samplePosition;
+    SurfaceBlend blend = blendOnSurface(light, positions, normals, q, position, normal);
     result = blend.sum / max(blend.weight, 1e-20f);
     return blend.weight > UPSAMPLE_MIN_WEIGHT;
 }

@@ -56,7 +56,8 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
         frame = {image(context, reducedWide, reducedHigh, "reduced diffuse cones"),
                  image(context, reducedWide, reducedHigh, "reduced diffuse representatives"),
                  image(context, reducedWide, reducedHigh, "reduced diffuse representatives' normals")};
-    samples = image(context, samplesWide, samplesHigh, "diffuse cones per sample");
+    for (GpuImage& perSample : samples)
+        perSample = image(context, samplesWide, samplesHigh, "diffuse cones per sample");
     tracedSamples = Buffer(context, VkDeviceSize(reducedWide) * reducedHigh * sizeof(uint32_t),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     tracedList = listHeader(context);
@@ -76,11 +77,16 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     const Reduced& now = reduced[frameCount_ % 2];
     const Reduced& last = reduced[(frameCount_ + 1) % 2];
     const uint32_t reducedWidth = now.light.desc.extent.width, reducedHeight = now.light.desc.extent.height;
-    const uint32_t width = samples.desc.extent.width, height = samples.desc.extent.height;
+    const GpuImage& nowSamples = samples[frameCount_ % 2];
+    const GpuImage& lastSamples = samples[(frameCount_ + 1) % 2];
+    const uint32_t width = nowSamples.desc.extent.width, height = nowSamples.desc.extent.height;
+    // The G-buffer's last images are this pass's last frame's only if it ran on that frame.
+    if (gbuffer.recorded != lastGBufferFrame_ + 1) haveHistory_ = false;
+    lastGBufferFrame_ = gbuffer.recorded;
     const std::array<const GpuImage*, 3> nowImages{&now.light, &now.positions, &now.normals};
 
     if (frameCount_ == 0)  // the last frame's images are bound, unread, before anything wrote them
-        for (const GpuImage* image : {&last.light, &last.positions, &last.normals})
+        for (const GpuImage* image : {&last.light, &last.positions, &last.normals, &lastSamples})
             imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
@@ -144,11 +150,11 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     for (const GpuImage* image : nowImages) finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 
     // 3. Every sample upsampled, or listed.
-    beginWriting(commands, samples);
+    beginWriting(commands, nowSamples);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.pipeline);
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, samples.view)
+        .storageImage(1, nowSamples.view)
         .buffer(2, fallbackSamples.buffer)
         .buffer(3, fallbackList.buffer)
         .sampledImage(6, gbuffer.position.view, point)
@@ -156,14 +162,18 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(8, now.light.view, point)
         .sampledImage(9, now.positions.view, point)
         .sampledImage(10, now.normals.view, point)
+        .sampledImage(12, lastSamples.view, point)
+        .sampledImage(13, gbuffer.lastPosition.view, point)
+        .sampledImage(14, gbuffer.lastNormal.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
-    vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(groupLimit), &groupLimit);
+    vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
     listWritten(commands);
 
     // 4. The listed samples' own cones, into the texels step 3 left.
-    traceListed(samples, 1u, fallbackSamples, fallbackList);
-    finishWriting(commands, samples, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    traceListed(nowSamples, 1u, fallbackSamples, fallbackList);
+    finishWriting(commands, nowSamples,
+                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 
     // The lists' counts, for the frame's statistics.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

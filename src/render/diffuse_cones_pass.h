@@ -1,7 +1,8 @@
 // The diffuse cones at a reduced resolution (ImageSettings::diffuseDownscale): one G-buffer sample
 // per block traces them, or takes the last frame's light where it was (a quarter of the blocks
 // trace anew each frame), every sample blends the nearest along its own surface, and the samples
-// where that fails trace their own cones, from a work list (shaders_glsl/reduced_diffuse.glsl). Only created when the downscale is above 1.
+// where that fails take their own light of the last frame in the same way or trace their own
+// cones, from a work list (shaders_glsl/reduced_diffuse.glsl). Only created when the downscale is above 1.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -28,13 +29,13 @@ struct DiffuseConesPass {
     // The voxels' light changed by a progressive bounce: the light reused from the last frames
     // lags it until every block has traced again.
     void lightChanged() { stillFrames_ = 0; }
-    // Whether the last frame is the image that tracing every block anew would give: each block
-    // traced since the view and the voxels' light last changed.
+    // Whether the last frame is the image that tracing every block anew would give: each block and
+    // edge sample traced since the view and the voxels' light last changed.
     bool settled() const { return stillFrames_ + 1 >= kRefreshPeriod; }
 
-    // The light per sample (RGBA32F, scene units: a sun's light can exceed
+    // The last recorded frame's light per sample (RGBA32F, scene units: a sun's light can exceed
     // float16): Σ wᵢ Lᵢ of the diffuse cones and their weighted occlusion.
-    const GpuImage& diffuse() const { return samples; }
+    const GpuImage& diffuse() const { return samples[(frameCount_ + 1) % 2]; }
     // After the recorded commands ran: the representatives that traced their cones, and the
     // samples that traced their own.
     uint32_t tracedRepresentatives() const;
@@ -48,7 +49,7 @@ struct DiffuseConesPass {
         GpuImage normals;
     };
     Reduced reduced[2];      // this frame's and the last one's, alternately
-    GpuImage samples;        // per sample: what diffuse() returns
+    GpuImage samples[2];     // per sample, this frame's and the last one's: what diffuse() returns
     Buffer tracedSamples;    // the representatives that trace this frame, packed 16 bits a coordinate
     Buffer tracedList;       // glsl::WorkListHeader over them
     Buffer fallbackSamples;  // the samples that trace their own cones
@@ -64,6 +65,7 @@ private:
     static constexpr uint32_t kRefreshPeriod = 4;  // frames in which every block traces once (2×2 pattern)
     uint32_t stillFrames_ = 0;  // frames since the view or the light last changed, not counting that one
     bool haveHistory_ = false;
+    uint64_t lastGBufferFrame_ = 0;  // GBufferPass::recorded when this pass last ran
     glm::mat4 lastViewProjection_{1.0f};
 };
 

@@ -1,5 +1,7 @@
 #include "render/gbuffer_pass.h"
 
+#include <utility>
+
 #include "gpu/commands.h"
 
 namespace vct {
@@ -24,6 +26,8 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     baseColor = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer base colour");
     emissive = makeTarget(context, VK_FORMAT_R16G16B16A16_SFLOAT, width, height, "G-buffer emissive");
     depth = makeTarget(context, VK_FORMAT_D32_SFLOAT, width, height, "G-buffer depth");
+    lastPosition = makeTarget(context, position.desc.format, width, height, "G-buffer position, last frame");
+    lastNormal = makeTarget(context, normal.desc.format, width, height, "G-buffer normal, last frame");
 
     GraphicsPipelineDesc desc;
     desc.vertexShader = "gbuffer.vert";
@@ -45,6 +49,14 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
 
 void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants) {
     const VkPipelineStageFlags2 colorStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+    // This frame draws over the images of the frame before last.
+    std::swap(position, lastPosition);
+    std::swap(normal, lastNormal);
+    if (recorded++ == 0)  // bound for reading before anything drew them
+        for (const GpuImage* last : {&lastPosition, &lastNormal})
+            imageBarrier(commands, last->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     GpuImage* targets[kColorTargets] = {&position, &normal, &baseColor, &emissive};
     for (GpuImage* target : targets)
         imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,

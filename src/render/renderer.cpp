@@ -404,14 +404,14 @@ uint64_t Renderer::deviceMemoryBytes() const {
     uint64_t bytes = volumes_->allocatedBytes();
     for (const GpuImage* image : std::initializer_list<const GpuImage*>{
              &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->emissive,
-             &gbufferPass_->depth, &shadePass_->radiance, &resolvePass_->resolved, &shadowPass_->sunMaps,
-             &shadowPass_->localMaps, &shadowPass_->areaMaps})
+             &gbufferPass_->depth, &gbufferPass_->lastPosition, &gbufferPass_->lastNormal, &shadePass_->radiance,
+             &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps, &shadowPass_->areaMaps})
         bytes += image->memorySize;
     if (diffuseConesPass_)
-        for (const GpuImage* image : {&diffuseConesPass_->samples, &diffuseConesPass_->reduced[0].light,
-                                      &diffuseConesPass_->reduced[0].positions, &diffuseConesPass_->reduced[0].normals,
-                                      &diffuseConesPass_->reduced[1].light, &diffuseConesPass_->reduced[1].positions,
-                                      &diffuseConesPass_->reduced[1].normals})
+        for (const GpuImage* image : {&diffuseConesPass_->samples[0], &diffuseConesPass_->samples[1],
+                                      &diffuseConesPass_->reduced[0].light, &diffuseConesPass_->reduced[0].positions,
+                                      &diffuseConesPass_->reduced[0].normals, &diffuseConesPass_->reduced[1].light,
+                                      &diffuseConesPass_->reduced[1].positions, &diffuseConesPass_->reduced[1].normals})
             bytes += image->memorySize;
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{
