@@ -83,6 +83,15 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags as
     vkCmdPipelineBarrier2(commands, &dependency);
 }
 
+void copyForHost(VkCommandBuffer commands, VkBuffer source, VkBuffer destination,
+                 std::initializer_list<VkBufferCopy> regions) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    vkCmdCopyBuffer(commands, source, destination, uint32_t(regions.size()), regions.begin());
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+}
+
 void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
     VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};

@@ -1,6 +1,8 @@
 // Recording and submitting work, and the barriers between passes.
 #pragma once
 
+#include <initializer_list>
+
 #include <vulkan/vulkan.h>
 
 #include <functional>
@@ -27,6 +29,11 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags as
 // A global memory barrier (buffer and image writes of one pass made visible to the next).
 void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+
+// Copies what compute shaders wrote into `source` (`regions`) to the host-visible `destination`,
+// readable by the host once the commands have run (e.g. a work list's count).
+void copyForHost(VkCommandBuffer commands, VkBuffer source, VkBuffer destination,
+                 std::initializer_list<VkBufferCopy> regions);
 
 // One full-screen triangle (fullscreen.vert) into `target`, every pixel of it written: begins
 // rendering, sets the viewport, calls `bind` (the pipeline, its descriptors), draws, ends. The

@@ -176,14 +176,9 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 
     // The lists' counts, for the frame's statistics.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    const VkBufferCopy traced{0, 0, sizeof(glsl::WorkListHeader)};
-    const VkBufferCopy fallback{0, sizeof(glsl::WorkListHeader), sizeof(glsl::WorkListHeader)};
-    vkCmdCopyBuffer(commands, tracedList.buffer, listHeaders.buffer, 1, &traced);
-    vkCmdCopyBuffer(commands, fallbackList.buffer, listHeaders.buffer, 1, &fallback);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                  VK_ACCESS_2_HOST_READ_BIT);
+    constexpr VkDeviceSize header = sizeof(glsl::WorkListHeader);
+    copyForHost(commands, tracedList.buffer, listHeaders.buffer, {{0, 0, header}});
+    copyForHost(commands, fallbackList.buffer, listHeaders.buffer, {{0, header, header}});
 
     if (!haveHistory_) stillFrames_ = kRefreshPeriod;  // every block traced: settled at once
     else if (viewProjection != lastViewProjection_) stillFrames_ = 0;
@@ -191,6 +186,14 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     haveHistory_ = true;
     lastViewProjection_ = viewProjection;
     ++frameCount_;
+}
+
+uint64_t DiffuseConesPass::memoryBytes() const {
+    uint64_t bytes = 0;
+    for (const Reduced& frame : reduced)
+        bytes += frame.light.memorySize + frame.positions.memorySize + frame.normals.memorySize;
+    for (const GpuImage& perSample : samples) bytes += perSample.memorySize;
+    return bytes;
 }
 
 uint32_t DiffuseConesPass::tracedRepresentatives() const {

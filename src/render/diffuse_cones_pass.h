@@ -40,6 +40,7 @@ struct DiffuseConesPass {
     // samples that traced their own.
     uint32_t tracedRepresentatives() const;
     uint32_t tracedFallbackSamples() const;
+    uint64_t memoryBytes() const;  // of its images
 
     // What one frame leaves for the next, per representative: its light (RGBA32F, as diffuse()),
     // where it was (xyz, w 1 on a surface) and which way it faced.

@@ -332,12 +332,8 @@ FrameStats Renderer::renderFrame() {
 }
 
 void Renderer::recordOccupiedCount(VkCommandBuffer commands) {
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    const VkBufferCopy region{0, 0, sizeof(glsl::WorkListHeader)};
-    vkCmdCopyBuffer(commands, volumes_->occupiedDispatch.buffer, occupiedHeader_.buffer, 1, &region);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                  VK_ACCESS_2_HOST_READ_BIT);
+    copyForHost(commands, volumes_->occupiedDispatch.buffer, occupiedHeader_.buffer,
+                {{0, 0, sizeof(glsl::WorkListHeader)}});
 }
 
 void Renderer::recordMeanRadiance(VkCommandBuffer commands) {
@@ -407,12 +403,7 @@ uint64_t Renderer::deviceMemoryBytes() const {
              &gbufferPass_->depth, &gbufferPass_->lastPosition, &gbufferPass_->lastNormal, &shadePass_->radiance,
              &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps, &shadowPass_->areaMaps})
         bytes += image->memorySize;
-    if (diffuseConesPass_)
-        for (const GpuImage* image : {&diffuseConesPass_->samples[0], &diffuseConesPass_->samples[1],
-                                      &diffuseConesPass_->reduced[0].light, &diffuseConesPass_->reduced[0].positions,
-                                      &diffuseConesPass_->reduced[0].normals, &diffuseConesPass_->reduced[1].light,
-                                      &diffuseConesPass_->reduced[1].positions, &diffuseConesPass_->reduced[1].normals})
-            bytes += image->memorySize;
+    if (diffuseConesPass_) bytes += diffuseConesPass_->memoryBytes();
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{
              &sceneGpu_->vertices, &sceneGpu_->indices, &sceneGpu_->triangleMaterials, &sceneGpu_->materials})
