@@ -2,14 +2,16 @@
 // Conservative voxelization: one workgroup per (triangle, tile) work item, one invocation per voxel
 // of the tile (see voxelize.h for the work split and the fixed-point sums). Every voxel the closed
 // triangle touches gets the triangle's attributes added to the integer accumulation buffers.
-// Base colour is the material's baseColorFactor only: textures are ignored for now (a voxel covers
-// many texels, and sampling them here needs the texture array and the UVs; a later refinement).
-// Emission is the material's voxelEmission: its emission times its emissive texture's mean colour.
+// Base colour and emission are the material's factors times its textures averaged over the voxel's
+// footprint (textureOverVoxel), so the light the voxels bounce has the colour of the surface there,
+// not of a white baseColorFactor. A material emits into the voxels where its voxelEmission (the
+// emissive texture's mean) is above zero.
 // Opacity is the largest voxel coverage (voxelEmission.w: alpha as a mean over the texture) of the
 // touching triangles; a triangle of coverage 0 (a fully transparent material) adds nothing.
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 #include "voxelize.h"
+#include "texture_transform.h"
 #include "triangle_box.glsl"
 
 layout(local_size_x = VOXELIZE_TILE, local_size_y = VOXELIZE_TILE, local_size_z = VOXELIZE_TILE) in;
@@ -20,6 +22,45 @@ layout(std430, set = 0, binding = 3) readonly buffer Materials { GpuMaterial mat
 layout(std430, set = 0, binding = 4) readonly buffer WorkItems { uvec2 workItems[]; };  // (triangle, packed tile)
 layout(std430, set = 0, binding = 5) buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
 layout(push_constant) uniform Push { VoxelizeParams params; };
+// The scene's base colour and emissive textures (SceneGpu::voxelTextureSet). A workgroup voxelizes
+// one triangle, so the material's texture index is dynamically uniform.
+layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
+layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
+
+// Both texture-coordinate sets of a corner: xy TEXCOORD_0, zw TEXCOORD_1.
+vec4 cornerTexCoords(uint triangle, uint corner) {
+    GpuVertex vertex = vertices[indices[3u * triangle + corner]];
+    return vec4(vertex.positionU.w, vertex.normalV.w, vertex.texCoord1.xy);
+}
+
+// Barycentric weights of a point of the triangle near the voxel's centre p: p projected onto the
+// plane, pulled inside the triangle (negative weights dropped). Equal weights if it is degenerate.
+vec3 weightsNear(vec3 a, vec3 b, vec3 c, vec3 p) {
+    vec3 e1 = b - a, e2 = c - a, d = p - a;
+    float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+    float denominator = d11 * d22 - d12 * d12;
+    if (!(denominator > 1e-12f * d11 * d22)) return vec3(1.0f / 3.0f);
+    float v = (d22 * dot(d, e1) - d12 * dot(d, e2)) / denominator;
+    float w = (d11 * dot(d, e2) - d12 * dot(d, e1)) / denominator;
+    vec3 weights = max(vec3(1.0f - v - w, v, w), vec3(0.0f));
+    return weights / (weights.x + weights.y + weights.z);
+}
+
+// A material texture averaged over the voxel: read at `weights` on the triangle, at the mip level
+// whose texels are as wide on the surface as a voxel (the triangle's texels per voxel side, from
+// its area in texels over its area in voxels, `voxelArea` twice that). A triangle whose coordinates
+// do not change reads its one point's texel.
+vec4 textureOverVoxel(int index, GpuTextureTransform transform, vec4 texCoords[3], vec3 weights, float voxelArea) {
+    vec2 t0 = transformedTexCoord(transform, texCoords[0].xy, texCoords[0].zw);
+    vec2 t1 = transformedTexCoord(transform, texCoords[1].xy, texCoords[1].zw);
+    vec2 t2 = transformedTexCoord(transform, texCoords[2].xy, texCoords[2].zw);
+    vec2 size = vec2(textureSize(colorTextures[index], 0));
+    vec2 e1 = (t1 - t0) * size, e2 = (t2 - t0) * size;
+    float texelArea = abs(e1.x * e2.y - e1.y * e2.x);
+    float texelsPerVoxel = sqrt(texelArea / max(voxelArea, 1e-20f));
+    float level = texelsPerVoxel > 1.0f ? log2(texelsPerVoxel) : 0.0f;
+    return textureLod(colorTextures[index], weights.x * t0 + weights.y * t1 + weights.z * t2, level);
+}
 
 vec3 gridVertex(uint triangle, uint corner) {
     return worldToGrid(params.grid, vertices[indices[3u * triangle + corner]].positionU.xyz);
@@ -43,18 +84,34 @@ void main() {
     uint resolution = params.grid.resolution.x;
     uvec2 work = workItems[item];
     uvec3 voxel = unpackCell(work.y) * VOXELIZE_TILE + gl_LocalInvocationID;
-    if (any(greaterThanEqual(voxel, uvec3(resolution)))) return;
-
     uint triangle = work.x;
     vec3 a = gridVertex(triangle, 0u), b = gridVertex(triangle, 1u), c = gridVertex(triangle, 2u);
-    if (!triangleTouchesBox(a, b, c, vec3(voxel) + 0.5f, 0.5f)) return;
-
     GpuMaterial material = materials[triangleMaterials[triangle]];
     float coverage = clamp(material.voxelEmission.w, 0.0f, 1.0f);
     if (!(coverage > 0.0f)) return;
-    vec3 albedo = clamp(material.baseColorFactor.rgb, 0.0f, 1.0f);
+    bool emits = max(material.voxelEmission.r, max(material.voxelEmission.g, material.voxelEmission.b)) > 0.0f;
+    vec3 albedo = material.baseColorFactor.rgb;
+    vec3 emission = emits ? material.emission.rgb : vec3(0.0f);
+    if (material.baseColorTexture >= 0 || (emits && material.emissiveTexture >= 0)) {
+        vec4 texCoords[3] = vec4[3](cornerTexCoords(triangle, 0u), cornerTexCoords(triangle, 1u),
+                                    cornerTexCoords(triangle, 2u));
+        vec3 weights = weightsNear(a, b, c, vec3(voxel) + 0.5f);
+        float voxelArea = length(cross(b - a, c - a));
+        if (material.baseColorTexture >= 0)
+            albedo *= textureOverVoxel(material.baseColorTexture, material.baseColorTransform, texCoords, weights,
+                                       voxelArea).rgb;
+        if (emits && material.emissiveTexture >= 0)
+            emission *= textureOverVoxel(material.emissiveTexture, material.emissiveTransform, texCoords, weights,
+                                         voxelArea).rgb;
+    }
+    // Only after the texture reads may the invocations of a workgroup part: lavapipe takes an explicit
+    // level of detail from one invocation of a SIMD group, which must have computed it (voxels read
+    // the wrong level where a neighbour had left early).
+    if (any(greaterThanEqual(voxel, uvec3(resolution))) || !triangleTouchesBox(a, b, c, vec3(voxel) + 0.5f, 0.5f))
+        return;
+    albedo = clamp(albedo, 0.0f, 1.0f);
+    emission = clamp(emission * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
     vec3 normal = unitNormal(a, b, c);
-    vec3 emission = clamp(material.voxelEmission.rgb * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
     uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);
     atomicAdd(accumulation[ACCUM_COUNT].values[index], 1u);
     if (params.dispatch.z != 0u)
@@ -63,7 +120,7 @@ void main() {
         atomicAdd(accumulation[ACCUM_ALBEDO + i].values[index], toFixed(albedo[i], ALBEDO_FIXED_SCALE));
         atomicAdd(accumulation[ACCUM_NORMAL + i].values[index], toFixed(normal[i], NORMAL_FIXED_SCALE));
     }
-    if (max(material.voxelEmission.r, max(material.voxelEmission.g, material.voxelEmission.b)) > 0.0f) {
+    if (emits) {
         atomicAdd(accumulation[ACCUM_EMITTERS].values[index], 1u);
         for (uint i = 0u; i < 3u; ++i)
             atomicAdd(accumulation[ACCUM_EMISSION + i].values[index], toFixed(emission[i], 1.0f));

@@ -26,7 +26,8 @@
 //   albedo in [0, 1] × 2^15, unsigned: N · 2^15 < 2^32 for N ≤ 131071; step 3·10⁻⁵ (UNORM8 needs 4·10⁻³).
 //   normal in [−1, 1] × 2^14, two's complement: |N · 2^14| < 2^31 for N ≤ 131071; step 6·10⁻⁵
 //       (the half-float output has 5·10⁻⁴ near 1).
-//   emission in [0, max] scaled so the scene's largest emission component is 2^15, unsigned: the same
+//   emission in [0, max] scaled so the largest emission component of an emitting material (its factor:
+//       the emissive texture it is sampled through is at most 1) is 2^15, unsigned: the same
 //       bound as albedo; each contribution is rounded to max · 2^−16, far below half-float precision
 //       for the brightest emitter (dimmer emitters in the same scene get the same absolute step).
 #ifndef VCT_VOXELIZE_H

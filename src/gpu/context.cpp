@@ -192,6 +192,12 @@ void GpuContext::create(const ContextOptions& options) {
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features13};
     features.features.fragmentStoresAndAtomics = VK_TRUE;
     features.features.shaderStorageImageWriteWithoutFormat = VK_TRUE;
+    // The scene's texture array is indexed by the material: per draw in the G-buffer, per
+    // workgroup in the voxelizer (dynamically uniform). Enabled where the device offers it; lavapipe
+    // 22.3 does not report it and indexes such arrays all the same.
+    VkPhysicalDeviceFeatures offered{};
+    vkGetPhysicalDeviceFeatures(physicalDevice, &offered);
+    features.features.shaderSampledImageArrayDynamicIndexing = offered.shaderSampledImageArrayDynamicIndexing;
 
     std::vector<const char*> deviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     if (options.swapchain) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

@@ -88,15 +88,37 @@ ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCod
     return result;
 }
 
-Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName) {
+namespace {
+
+// Entry i of `values` as constant_id i; `values` must outlive it.
+struct Specialization {
+    explicit Specialization(const std::vector<uint32_t>& values) {
+        for (uint32_t id = 0; id < values.size(); ++id)
+            entries.push_back({id, id * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
+        info = {uint32_t(entries.size()), entries.data(), values.size() * sizeof(uint32_t), values.data()};
+    }
+    const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+    Specialization(const Specialization&) = delete;
+    Specialization& operator=(const Specialization&) = delete;
+    std::vector<VkSpecializationMapEntry> entries;
+    VkSpecializationInfo info{};
+};
+
+}  // namespace
+
+Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName,
+                               const std::vector<VkDescriptorSetLayout>& laterSets,
+                               const std::vector<uint32_t>& specialization) {
     const ShaderCode code = loadShader(shaderName);
-    const ShaderLayout layout = createShaderLayout(context, {code});
+    const ShaderLayout layout = createShaderLayout(context, {code}, laterSets);
     VkShaderModule module = createShaderModule(context, code);
+    const Specialization constants(specialization);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module;
     info.stage.pName = "main";
+    info.stage.pSpecializationInfo = constants.get();
     info.layout = layout.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     const VkResult result = vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
@@ -121,12 +143,8 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
     };
     addStage(VK_SHADER_STAGE_VERTEX_BIT, code[0]);
     if (code.size() > 1) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, code[1]);
-    std::vector<VkSpecializationMapEntry> entries;
-    for (uint32_t id = 0; id < desc.fragmentSpecialization.size(); ++id)
-        entries.push_back({id, id * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
-    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                              entries.size() * sizeof(uint32_t), desc.fragmentSpecialization.data()};
-    if (!entries.empty() && stages.size() > 1) stages[1].pSpecializationInfo = &specialization;
+    const Specialization constants(desc.fragmentSpecialization);
+    if (stages.size() > 1) stages[1].pSpecializationInfo = constants.get();
 
     // Vertices are pulled from storage buffers by gl_VertexIndex: no vertex input state.
     VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};

@@ -96,8 +96,11 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
 };
 
-// A compute pipeline with its layout read from the shader (createShaderLayout).
-Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName);
+// A compute pipeline with its layout read from the shader (createShaderLayout), `laterSets` as its
+// sets 1, 2, … and `specialization` its constants (element i is constant_id i, a uint or VkBool32).
+Pipeline createComputePipeline(GpuContext& context, const std::string& shaderName,
+                               const std::vector<VkDescriptorSetLayout>& laterSets = {},
+                               const std::vector<uint32_t>& specialization = {});
 // A graphics pipeline for dynamic rendering, with dynamic viewport and scissor, and its layout read
 // from its shaders.
 Pipeline createGraphicsPipeline(GpuContext& context, const GraphicsPipelineDesc& desc,

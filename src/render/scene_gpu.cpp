@@ -196,32 +196,56 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
     }
 
     // The texture array changes size with the scene, so it lives in a classic descriptor set.
+    // The G-buffer reads it per pixel, the voxelizer per voxel.
     VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount(),
-                                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+                                         VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = 1;
     layoutInfo.pBindings = &binding;
     VK_CHECK(vkCreateDescriptorSetLayout(context.device, &layoutInfo, nullptr, &textureSetLayout));
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount()};
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * textureCount()};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
+    poolInfo.maxSets = 2;
     poolInfo.poolSizeCount = 1;
     poolInfo.pPoolSizes = &poolSize;
     VK_CHECK(vkCreateDescriptorPool(context.device, &poolInfo, nullptr, &texturePool));
+    const VkDescriptorSetLayout layouts[2] = {textureSetLayout, textureSetLayout};
     VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocateInfo.descriptorPool = texturePool;
-    allocateInfo.descriptorSetCount = 1;
-    allocateInfo.pSetLayouts = &textureSetLayout;
-    VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, &textureSet));
-    std::vector<VkDescriptorImageInfo> imageInfos;
-    for (size_t i = 0; i < textures.size(); ++i)
+    allocateInfo.descriptorSetCount = 2;
+    allocateInfo.pSetLayouts = layouts;
+    VkDescriptorSet sets[2];
+    VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, sets));
+    textureSet = sets[0];
+    voxelTextureSet = sets[1];
+
+    // The voxelizer reads base colour and emissive textures only, which glTF stores in sRGB; the
+    // linear ones are the white fallback in its set. lavapipe 22.3 (LLVM 15) compiles a read for
+    // every texture bound to the array, and crashed compiling a compute shader's filtered read of
+    // a linear RGBA8 texture.
+    const bool anyLinear =
+        std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& texture) { return !texture.srgb; });
+    if (anyLinear) {
+        const uint8_t white[4] = {255, 255, 255, 255};
+        voxelFallbackTexture = uploadTexture(context, 1, 1, white, true);
+    }
+    std::vector<VkDescriptorImageInfo> imageInfos, voxelImageInfos;
+    for (size_t i = 0; i < textures.size(); ++i) {
         imageInfos.push_back({textureSamplers[i], textures[i].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = textureSet;
-    write.descriptorCount = textureCount();
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = imageInfos.data();
-    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+        const bool linear = i < scene.textures.size() && !scene.textures[i].srgb;
+        voxelImageInfos.push_back(linear ? VkDescriptorImageInfo{textureSamplers[i], voxelFallbackTexture.view,
+                                                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}
+                                         : imageInfos.back());
+    }
+    VkWriteDescriptorSet writes[2];
+    for (int i = 0; i < 2; ++i) {
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = sets[i];
+        writes[i].descriptorCount = textureCount();
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writes[i].pImageInfo = i == 0 ? imageInfos.data() : voxelImageInfos.data();
+    }
+    vkUpdateDescriptorSets(context.device, 2, writes, 0, nullptr);
 }
 
 SceneGpu::~SceneGpu() {

@@ -48,13 +48,17 @@ struct SceneGpu {
     std::vector<IndexRun> opaqueRuns;
     std::vector<MaterialRange> alphaTestedRanges;
 
-    // Colour textures, base colour and emissive (at least one: a white fallback), in descriptor set 1
-    // of the G-buffer pass.
+    // The material textures (at least one: a white fallback), in descriptor set 1 of the G-buffer
+    // pass and of the voxelizer.
     std::vector<GpuImage> textures;
     std::vector<Sampler> samplers;  // one per kind of glTF sampler the textures use (wrap, filter)
     VkDescriptorSetLayout textureSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool texturePool = VK_NULL_HANDLE;
     VkDescriptorSet textureSet = VK_NULL_HANDLE;
+    // The same array for the voxelizer, which reads the sRGB ones (base colour, emissive): a linear
+    // texture's place holds voxelFallbackTexture, white (see the constructor for why).
+    VkDescriptorSet voxelTextureSet = VK_NULL_HANDLE;
+    GpuImage voxelFallbackTexture;
     uint32_t textureCount() const { return uint32_t(textures.size()); }
 
 private:

@@ -184,10 +184,14 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     const std::vector<glm::uvec2> items = buildVoxelizeWorkItems(scene, gpuTriangleOrder(scene, sceneGpu), grid,
                                                                  voxelizeWorkItemLimit(context.memoryProperties));
 
-    float largestEmission = 0.0f;  // of what the voxels receive (GpuMaterial::voxelEmission)
+    // The largest emission a voxel can receive: an emitting material's factor (its emissive texture,
+    // sampled per voxel, is at most 1).
+    float largestEmission = 0.0f;
     for (const Material& material : scene.materials) {
-        const glm::vec3 emission = voxelEmission(scene, material);
-        largestEmission = std::max({largestEmission, emission.x, emission.y, emission.z});
+        const glm::vec3 mean = voxelEmission(scene, material);
+        if (std::max({mean.x, mean.y, mean.z}) > 0.0f)
+            largestEmission =
+                std::max({largestEmission, material.emission.x, material.emission.y, material.emission.z});
     }
     params.grid = grid;
     params.grid.resolution.z = uint32_t(scene.triangleCount());
@@ -218,7 +222,8 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
         accumulation[channel] = Buffer(context, oneWord ? 4 : cube(resolution) * 4,
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     }
-    voxelizePipeline = createComputePipeline(context, "voxelize.comp");
+    voxelizePipeline =
+        createComputePipeline(context, "voxelize.comp", {sceneGpu.textureSetLayout}, {sceneGpu.textureCount()});
     resolvePipeline = createComputePipeline(context, "voxel_resolve.comp");
 }
 
@@ -251,7 +256,11 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
-    if (!workChunks.empty()) vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
+    if (!workChunks.empty()) {
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
+        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout, 1, 1,
+                                &sceneGpu.voxelTextureSet, 0, nullptr);
+    }
     for (const WorkChunk& chunk : workChunks) {
         DescriptorPush()
             .buffer(0, sceneGpu.vertices.buffer)

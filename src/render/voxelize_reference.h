@@ -1,7 +1,9 @@
 // The CPU twin of the voxelize pass, in double precision: the specification the GPU is tested against.
 // The same conservative separating-axis test (see shaders_glsl/triangle_box.glsl), the same
 // degenerate-triangle rule and the same attributes, averaged exactly instead of in fixed point.
-// Triangles of a material with voxelCoverage 0 touch nothing, as on the GPU.
+// Triangles of a material with voxelCoverage 0 touch nothing, as on the GPU. Colours are the
+// materials' factors: the GPU's textures are left out (it agrees where they are white, as an
+// alpha-only texture is), and the tests check the GPU's texture sampling on its own.
 #pragma once
 
 #include <array>

@@ -6,6 +6,7 @@
 #include "render/renderer.h"
 #include "scene/default_light.h"
 #include "scene/load.h"
+#include "scene/material_textures.h"
 
 namespace vct::test {
 namespace {
@@ -147,6 +148,64 @@ TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) 
         for (uint32_t x = 21; x < kSize; ++x)
             EXPECT_NEAR(image.pixel(x, y)[0], upImage, kRelativeTolerance * upImage) << x << "," << y;
     }
+}
+
+TEST_F(MaterialTextures, ATexturedWallBleedsItsTexturesColourIntoTheIndirectLight) {
+    // A white floor (the quad) beside a wall both lit by a sun. The wall is red once through its
+    // base colour factor and once through a red texture under a white factor, as glTF models are
+    // coloured: the indirect light on the floor must be the same red in both, so the voxels carry
+    // the texture's colour (with the factor alone they bounced white light).
+    const glm::u8vec3 red(200, 40, 40);  // sRGB
+    auto render = [&](bool textured) {
+        GltfBuilder gltf = quadFacingCamera();
+        gltf.document["materials"][0] = {
+            {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}}};
+        // The wall: x = 1, y ∈ [−1, 1], z ∈ [0, 2], facing the floor (−x).
+        const int positions = gltf.addVec3({{1, -1, 0}, {1, -1, 2}, {1, 1, 2}, {1, 1, 0}});
+        const int normals = gltf.addVec3({{-1, 0, 0}, {-1, 0, 0}, {-1, 0, 0}, {-1, 0, 0}});
+        const int uvs = gltf.addVec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+        const int wall = gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}},
+                                      gltf.addIndices({0, 1, 2, 0, 2, 3}), /*material=*/1);
+        gltf.document["scenes"][0]["nodes"].push_back(gltf.addNode({{"mesh", wall}}));
+        json pbr = {{"metallicFactor", 0.0}};
+        if (textured) {
+            std::vector<uint16_t> texels;
+            for (int i = 0; i < 16; ++i) texels.insert(texels.end(), {red.r, red.g, red.b, 255});
+            gltf.document["images"] =
+                json::array({{{"uri", "data:image/png;base64," + base64(encodePng(4, 4, 4, 8, texels))}}});
+            gltf.document["textures"] = json::array({{{"source", 0}}});
+            pbr["baseColorTexture"] = {{"index", 0}};
+        } else {
+            pbr["baseColorFactor"] = {srgbToLinear(red.r / 255.0f), srgbToLinear(red.g / 255.0f),
+                                      srgbToLinear(red.b / 255.0f), 1.0};
+        }
+        gltf.document["materials"].push_back({{"pbrMetallicRoughness", pbr}});
+        Scene scene = loadBuilt(gltf);
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = glm::normalize(glm::vec3(1.0f, 0.0f, -1.0f));  // onto the floor and the wall's face
+        sun.intensity = 3.0f;
+        scene.lights.push_back(sun);
+        RenderSettings settings = directSettings();
+        settings.shading.mode = RenderMode::Indirect;
+        Renderer renderer(gpu(), scene, settings);
+        renderer.renderFrame();
+        return renderer.readImage();
+    };
+    const Image textured = render(true), coloured = render(false);
+    // The floor's half beside the wall (x > 0 in the image's right half).
+    glm::dvec3 texturedSum(0.0), colouredSum(0.0);
+    for (uint32_t y = 4; y < kSize - 4; ++y)
+        for (uint32_t x = kSize / 2; x < kSize - 4; ++x) {
+            texturedSum += glm::dvec3(textured.pixel(x, y)[0], textured.pixel(x, y)[1], textured.pixel(x, y)[2]);
+            colouredSum += glm::dvec3(coloured.pixel(x, y)[0], coloured.pixel(x, y)[1], coloured.pixel(x, y)[2]);
+        }
+    std::printf(
+        "indirect light beside the wall, red through the factor: (%.4f %.4f %.4f), through a texture: "
+        "(%.4f %.4f %.4f)\n",
+        colouredSum.r, colouredSum.g, colouredSum.b, texturedSum.r, texturedSum.g, texturedSum.b);
+    ASSERT_GT(colouredSum.r, 2.0 * colouredSum.g) << "the red wall tints the floor's indirect light";
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(texturedSum[c], colouredSum[c], 0.01 * colouredSum[c]) << "channel " << c;
 }
 
 }  // namespace

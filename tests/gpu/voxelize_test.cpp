@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <iostream>
 #include <numeric>
 #include <random>
@@ -585,24 +586,101 @@ TEST_F(Voxelize, EmissionIsTheMeanOfTheEmittingTrianglesOnly) {
     expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
 }
 
-TEST_F(Voxelize, AnEmissiveTextureGivesTheFactorTimesItsMeanColour) {
-    // The voxelizer does not sample textures: a surface glowing through a half-black emissive
-    // texture glows evenly with half its emissiveFactor (the same total power, spread out).
-    Scene scene =
-        makeScene({{glm::vec3(5.25f, 5.5f, 5.25f), glm::vec3(5.25f, 5.5f, 5.75f), glm::vec3(5.75f, 5.5f, 5.25f)}}, {0},
-                  {{{1.0f, 1.0f, 1.0f}, {3.0f, 2.0f, 1.0f}}});
-    Texture texture;
-    texture.width = 2;
-    texture.height = 1;
-    texture.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
-    scene.textures.push_back(texture);
-    scene.materials[0].emissiveTexture.index = 0;
-    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
-    const size_t voxel = 5 + 32 * (5 + 32 * 5);
-    EXPECT_NEAR(gpu.emission[voxel].r, 1.5f, kEmissionTolerance * 3.0f);
-    EXPECT_NEAR(gpu.emission[voxel].g, 1.0f, kEmissionTolerance * 3.0f);
-    EXPECT_NEAR(gpu.emission[voxel].b, 0.5f, kEmissionTolerance * 3.0f);
-    expectMatchesTwin(scene, exactGrid(32), kAmbiguousMargin);
+// A rectangle of two textured triangles in the plane z = `z` over voxels x ∈ [2, 9], y ∈ [2, 5]
+// (its edges clear of the voxels' faces), mapped u = (x − 2)/8, v = (y − 2)/4: with a texture 8
+// texels wide, voxel column x reads texel column x − 2 at its centre.
+void addTexturedRectangle(Scene& scene, float z, uint32_t material) {
+    const float x0 = 2.2f, x1 = 9.8f, y0 = 2.2f, y1 = 5.8f;
+    auto corner = [&](float x, float y) {
+        Vertex vertex;
+        vertex.position = glm::vec3(x, y, z);
+        vertex.u = (x - 2.0f) / 8.0f;
+        vertex.v = (y - 2.0f) / 4.0f;
+        vertex.uv1 = glm::vec2(vertex.u, vertex.v);
+        return vertex;
+    };
+    const uint32_t first = uint32_t(scene.vertices.size());
+    for (const Vertex& vertex : {corner(x0, y0), corner(x1, y0), corner(x1, y1), corner(x0, y1)})
+        scene.vertices.push_back(vertex);
+    for (uint32_t index : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + index);
+    scene.triangleMaterials.insert(scene.triangleMaterials.end(), {material, material});
+}
+
+Texture texture(uint32_t width, uint32_t height, const std::function<glm::u8vec3(uint32_t, uint32_t)>& texel) {
+    Texture result;
+    result.width = width;
+    result.height = height;
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            const glm::u8vec3 rgb = texel(x, y);
+            result.rgba8.insert(result.rgba8.end(), {rgb.r, rgb.g, rgb.b, 255});
+        }
+    return result;
+}
+
+TEST_F(Voxelize, TexturesGiveEachVoxelTheColourOfTheSurfaceThere) {
+    // The light the voxels bounce must have the colour the surface has there: a glTF model's
+    // baseColorFactor is mostly white, its colour in the texture. Layer 3: base colour factor ½
+    // through a texture red in its left half and green in its right. Layer 6: emission (3, 2, 1)
+    // through an emissive texture black in its left half. Layer 9: a red and green checkerboard of
+    // two texels per voxel, which a voxel sees as its mean, (½, ½, 0) in linear light, through the
+    // texture's mip chain (one texel read would be red or green).
+    Scene scene;
+    scene.name = "textured voxels";
+    auto halves = [](glm::u8vec3 left, glm::u8vec3 right) {
+        return texture(8, 1, [=](uint32_t x, uint32_t) { return x < 4 ? left : right; });
+    };
+    scene.textures.push_back(halves({255, 0, 0}, {0, 255, 0}));
+    scene.textures.push_back(halves({0, 0, 0}, {255, 255, 255}));
+    scene.textures.push_back(texture(
+        16, 8, [](uint32_t x, uint32_t y) { return (x + y) % 2 ? glm::u8vec3(255, 0, 0) : glm::u8vec3(0, 255, 0); }));
+    Material halfColoured;
+    halfColoured.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    halfColoured.baseColorTexture.index = 0;
+    Material halfGlowing;
+    halfGlowing.emission = glm::vec3(3.0f, 2.0f, 1.0f);
+    halfGlowing.emissiveTexture.index = 1;
+    Material checkered;
+    checkered.baseColorTexture.index = 2;
+    scene.materials = {halfColoured, halfGlowing, checkered};
+    addTexturedRectangle(scene, 3.5f, 0);
+    addTexturedRectangle(scene, 6.5f, 1);
+    addTexturedRectangle(scene, 9.5f, 2);
+
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(16));
+    auto at = [&](const std::vector<glm::vec4>& image, uint32_t x, uint32_t y, uint32_t z) {
+        return glm::vec3(image[x + 16 * (y + 16 * z)]);
+    };
+    auto expectNear = [](glm::vec3 actual, glm::vec3 expected, float tolerance, const std::string& where) {
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], expected[c], tolerance) << where << " channel " << c;
+    };
+    // A voxel beside the colour edge (columns 5 and 6) that the rectangle's diagonal also crosses
+    // averages two triangles' reads, one of them at the corner where the other triangle meets it,
+    // on the edge: it lies between the two colours.
+    auto expectBetween = [](glm::vec3 actual, glm::vec3 left, glm::vec3 right, float tolerance,
+                            const std::string& where) {
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_GE(actual[c], std::min(left[c], right[c]) - tolerance) << where << " channel " << c;
+            EXPECT_LE(actual[c], std::max(left[c], right[c]) + tolerance) << where << " channel " << c;
+        }
+    };
+    const glm::vec3 red(0.5f, 0.0f, 0.0f), green(0.0f, 0.5f, 0.0f), dark(0.0f), glowing(3.0f, 2.0f, 1.0f);
+    for (uint32_t y = 2; y <= 5; ++y)
+        for (uint32_t x = 2; x <= 9; ++x) {
+            const std::string where = "voxel column " + std::to_string(x) + ", row " + std::to_string(y);
+            const glm::vec3 albedo = at(gpu.albedoOpacity, x, y, 3), emission = at(gpu.emission, x, y, 6);
+            if (x == 5 || x == 6) {
+                expectBetween(albedo, red, green, kAlbedoTolerance, where + " of the half-coloured layer");
+                expectBetween(emission, dark, glowing, kEmissionTolerance * 3.0f, where + " of the half-glowing layer");
+            } else {
+                expectNear(albedo, x < 6 ? red : green, kAlbedoTolerance, where + " of the half-coloured layer");
+                expectNear(emission, x < 6 ? dark : glowing, kEmissionTolerance * 3.0f,
+                           where + " of the half-glowing layer");
+            }
+            // sRGB 255 and 0 averaged in linear light, then stored as UNORM8.
+            expectNear(at(gpu.albedoOpacity, x, y, 9), glm::vec3(0.5f, 0.5f, 0.0f), 1.0f / 255.0f,
+                       where + " of the checkered layer");
+        }
 }
 
 // A rectangle of two triangles in the plane z = `z` (a voxel centre plane: it touches that layer
