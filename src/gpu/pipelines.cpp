@@ -172,6 +172,7 @@ static VkPipeline createGraphicsPipeline(GpuContext& context, VkPipelineLayout l
     blend.attachmentCount = uint32_t(blends.size());
     blend.pAttachments = blends.data();
     std::vector<VkDynamicState> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    if (desc.dynamicCullMode) dynamicStates.push_back(VK_DYNAMIC_STATE_CULL_MODE);
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = uint32_t(dynamicStates.size());
     dynamic.pDynamicStates = dynamicStates.data();

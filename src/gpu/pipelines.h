@@ -43,6 +43,7 @@ struct GraphicsPipelineDesc {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     bool depthTest = false;
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode instead (core in Vulkan 1.3)
     // The fragment shader's specialization constants: element i is constant_id i (a uint, or a
     // bool as VkBool32); empty leaves the shader's defaults.
     std::vector<uint32_t> fragmentSpecialization;

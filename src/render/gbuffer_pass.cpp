@@ -35,6 +35,7 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     desc.colorFormats = {position.desc.format, normal.desc.format, baseColor.desc.format, emissive.desc.format};
     desc.depthFormat = VK_FORMAT_D32_SFLOAT;
     desc.depthTest = true;
+    desc.dynamicCullMode = true;  // per material: glTF doubleSided
     // The texture array's size is a specialization constant, so the pipeline is built per scene.
     // Alpha-tested materials get a second pipeline: a shader that may discard tests depth only
     // after shading, and would cost the opaque materials their early depth test (6× the G-buffer
@@ -103,6 +104,7 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
         for (const SceneGpu::MaterialRange& range : scene.materialRanges) {
             if (range.alphaTested != alphaTested) continue;
             vkCmdPushConstants(commands, drawing.layout, VK_SHADER_STAGE_ALL, 0, sizeof(uint32_t), &range.material);
+            vkCmdSetCullMode(commands, range.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
             vkCmdDrawIndexed(commands, range.indexCount, 1, range.firstIndex, 0, 0);
         }
     };

@@ -137,6 +137,7 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
     }
     for (MaterialRange& range : materialRanges) {
         range.alphaTested = scene.materials[range.material].alphaMode != AlphaMode::Opaque;
+        range.doubleSided = scene.materials[range.material].doubleSided;
         if (range.alphaTested) alphaTestedRanges.push_back(range);
         else if (!opaqueRuns.empty() && opaqueRuns.back().firstIndex + opaqueRuns.back().indexCount == range.firstIndex)
             opaqueRuns.back().indexCount += range.indexCount;

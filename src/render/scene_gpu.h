@@ -36,6 +36,7 @@ struct SceneGpu {
         uint32_t firstIndex;
         uint32_t indexCount;
         bool alphaTested = false;  // MASK or BLEND: its fragments may be discarded
+        bool doubleSided = true;   // false: the camera does not see its back faces
     };
     std::vector<MaterialRange> materialRanges;
     // For the shadow pass: the triangles of opaque materials as runs of consecutive ranges, each

@@ -568,6 +568,7 @@ struct Converter {
             defaultMaterial = int(scene.materials.size());
             Material fallback;
             fallback.name = "default";
+            fallback.doubleSided = false;  // glTF's default material, as its doubleSided defaults
             scene.materials.push_back(fallback);
         }
         return defaultMaterial;

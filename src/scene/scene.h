@@ -65,7 +65,10 @@ struct Material {
     float specularWeight = 1.0f;
     glm::vec3 emission{0.0f};          // emissiveFactor × KHR_materials_emissive_strength: radiance
     TextureReference emissiveTexture;  // sRGB; multiplies `emission`
-    bool doubleSided = false;
+    // glTF doubleSided: false culls the back faces, so the camera does not see the surface from
+    // behind. glTF's default is false, which the loader gives files that leave it out; a scene built
+    // in code is seen from both sides unless it says otherwise.
+    bool doubleSided = true;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;  // Mask: where alpha < alphaCutoff there is no surface (glTF default 0.5)
 };

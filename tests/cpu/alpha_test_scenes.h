@@ -1,10 +1,11 @@
-// The scene the alphaMode tests share (renderer and path tracer): a red quad whose base colour
+// The scene the alphaMode and doubleSided tests share (renderer and path tracer): a red quad whose base colour
 // texture's alpha is a checkerboard, in front of a white wall, both lit head-on by a sun, so the
 // camera sees the wall through the quad's holes and the sun casts the checkerboard onto the wall.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "scene/scene.h"
 
@@ -102,6 +103,17 @@ inline Scene occluderBeforeWall(AlphaMode alphaMode, bool checkerTexture, float 
     camera.position = glm::vec3(0.0f, 0.0f, 2.0f);
     camera.yfov = kCameraFov;
     scene.cameras.push_back(camera);
+    return scene;
+}
+
+// occluderBeforeWall with an opaque occluder wound the other way round, its front facing away from
+// the camera and the sun (−Z), and `doubleSided` as glTF's: single-sided, the camera must not see it
+// (it sees the wall in its shadow instead); double-sided, it sees its back lit red.
+inline Scene occluderSeenFromBehind(bool doubleSided) {
+    Scene scene = occluderBeforeWall(AlphaMode::Opaque, false);
+    scene.materials[1].doubleSided = doubleSided;
+    for (size_t t = 0; t < scene.triangleMaterials.size(); ++t)
+        if (scene.triangleMaterials[t] == 1) std::swap(scene.indices[3 * t + 1], scene.indices[3 * t + 2]);
     return scene;
 }
 

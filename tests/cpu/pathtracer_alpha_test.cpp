@@ -16,6 +16,7 @@ using vct::test::checkerOpaqueAt;
 using vct::test::distanceToCheckerEdge;
 using vct::test::kOccluderZ;
 using vct::test::occluderBeforeWall;
+using vct::test::occluderSeenFromBehind;
 
 constexpr float kTolerance = 1e-3f;
 
@@ -74,6 +75,22 @@ TEST(PathTracerAlpha, BlendAtHalfAlphaStopsHalfTheRays) {
     // Standard errors: sqrt(p(1 − p)/N) ≤ 0.0056 for these Bernoulli shares; 4σ.
     EXPECT_NEAR(mean.r, 0.75, 0.022);
     EXPECT_NEAR(mean.g, 0.25, 0.022);
+}
+
+TEST(PathTracerDoubleSided, TheCameraDoesNotSeeASingleSidedSurfaceFromBehindButItsShadowStays) {
+    // As the renderer's G-buffer culls back faces, a camera ray passes the back of a single-sided
+    // occluder and meets the wall in its shadow; double-sided, it meets the occluder's lit back.
+    const Scene singleSidedScene = occluderSeenFromBehind(false), doubleSidedScene = occluderSeenFromBehind(true);
+    const PathTracer singleSided = createPathTracer(singleSidedScene);
+    const PathTracer doubleSided = createPathTracer(doubleSidedScene);
+    Rng rng = Rng::forSample(3, 0, 0);
+    for (const glm::vec2 point : {glm::vec2(0.0f), glm::vec2(0.5f, -0.3f), glm::vec2(-0.7f, 0.6f)}) {
+        const glm::vec3 behind = directLightAlong(singleSided, point, point, rng);
+        const glm::vec3 back = directLightAlong(doubleSided, point, point, rng);
+        EXPECT_NEAR(behind.r, 0.0f, kTolerance) << point.x << "," << point.y;
+        EXPECT_NEAR(back.r, 1.0f, kTolerance) << point.x << "," << point.y;
+        EXPECT_NEAR(back.g, 0.0f, kTolerance) << point.x << "," << point.y;
+    }
 }
 
 }  // namespace

@@ -229,7 +229,7 @@ std::optional<RayHit> traverse(const Bvh& bvh, const Ray& ray, bool anyHitOnly, 
                 std::optional<RayHit> hit = intersect(r, bvh.triangles[i], tMax);
                 if (!hit) continue;
                 hit->triangle = bvh.triangleIds[i];
-                if (bvh.alphaTested[i] && filter && !filter(*hit)) continue;
+                if (bvh.filtered[i] && filter && !filter(*hit)) continue;
                 best = hit;
                 tMax = hit->t;
                 if (anyHitOnly) return best;
@@ -287,7 +287,7 @@ Bvh buildBvh(const Scene& scene) {
             {scene.vertices[index[0]].position, scene.vertices[index[1]].position, scene.vertices[index[2]].position});
         bvh.triangleIds.push_back(primitive.id);
         const Material& material = scene.materials[scene.triangleMaterials[primitive.id]];
-        bvh.alphaTested.push_back(material.alphaMode != AlphaMode::Opaque ? 1 : 0);
+        bvh.filtered.push_back(material.alphaMode != AlphaMode::Opaque || !material.doubleSided ? 1 : 0);
     }
     return bvh;
 }

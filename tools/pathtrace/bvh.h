@@ -48,13 +48,14 @@ struct Bvh {
     std::vector<BvhNode> nodes;                // nodes[0] is the root
     std::vector<TrianglePositions> triangles;  // in leaf order
     std::vector<uint32_t> triangleIds;         // the Scene's index of each entry of `triangles`
-    // 1 where the entry's material is MASK or BLEND: only its hits are put to a HitFilter, so a scene
-    // of opaque materials is traversed as fast as without one.
-    std::vector<uint8_t> alphaTested;
+    // 1 where a hit on the entry may not count: its material is MASK or BLEND, or single-sided (a
+    // camera ray passes its back). Only such hits are put to a HitFilter, so a scene of opaque
+    // two-sided materials is traversed as fast as without one.
+    std::vector<uint8_t> filtered;
 };
 
-// Asked about each hit on an alpha-tested triangle (RayHit::triangle set): false lets the ray pass
-// through it, as through a cut-out (glTF alphaMode). Empty: every hit counts.
+// Asked about each hit on a filtered triangle (RayHit::triangle set): false lets the ray pass
+// through it, as through a cut-out (glTF alphaMode) or a back face. Empty: every hit counts.
 using HitFilter = std::function<bool(const RayHit&)>;
 
 // Zero-area triangles are left out: no ray can hit them.

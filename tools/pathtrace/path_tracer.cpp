@@ -281,6 +281,22 @@ HitFilter alphaFilter(const PathTracer& tracer, Rng& rng) {
     return [&tracer, &rng](const RayHit& hit) { return stopsRay(tracer, hit, rng); };
 }
 
+// What the camera's ray meets: as alphaFilter, and it passes the back of a single-sided surface
+// (glTF doubleSided false: back faces culled), as the renderer's G-buffer does. Paths and shadow
+// rays meet both sides of every surface, as the renderer's voxels and shadow maps do.
+HitFilter cameraFilter(const PathTracer& tracer, const glm::vec3& direction, Rng& rng) {
+    return [&tracer, direction, &rng](const RayHit& hit) {
+        const Scene& scene = *tracer.scene;
+        if (!scene.materials[scene.triangleMaterials[hit.triangle]].doubleSided) {
+            const uint32_t* corner = &scene.indices[3 * hit.triangle];
+            const glm::vec3 p0 = scene.vertices[corner[0]].position, p1 = scene.vertices[corner[1]].position,
+                            p2 = scene.vertices[corner[2]].position;
+            if (glm::dot(glm::cross(p1 - p0, p2 - p0), direction) > 0.0f) return false;  // its back
+        }
+        return stopsRay(tracer, hit, rng);
+    };
+}
+
 // Nothing between s and `target` (itself offset off its own surface by the caller, or a light).
 bool unoccluded(const PathTracer& tracer, const SurfacePoint& s, const glm::vec3& target, Rng& rng) {
     Ray ray = spawnRay(s, glm::normalize(target - s.position));
@@ -397,7 +413,8 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
     // One interaction past maxDepth: emission that BRDF sampling finds there belongs to the light
     // the last gathering vertex received (its other half is that vertex's light sampling).
     for (uint32_t depth = 1; depth <= tracer.maxDepth + 1; ++depth) {
-        const std::optional<RayHit> hit = closestHit(tracer.bvh, ray, alphaFilter(tracer, rng));
+        const std::optional<RayHit> hit = closestHit(
+            tracer.bvh, ray, depth == 1 ? cameraFilter(tracer, ray.direction, rng) : alphaFilter(tracer, rng));
         if (!hit) {
             // The sky: seen by the camera it is direct light, as an emitter seen is; on a surface
             // it is indirect light, which is where the renderer's cones gather it. Uniform, so

@@ -4,7 +4,10 @@
 // Model, shared with the GPU renderer so their images can be compared:
 // - Every surface reflects on both sides: the shading normal is flipped towards the viewer.
 //   Reflection must also stay on the viewer's side of the geometric normal (no light through
-//   a surface when the shading normal bends away from it).
+//   a surface when the shading normal bends away from it). A single-sided material (glTF
+//   doubleSided false) is not seen from behind by the camera's rays, as back-face culling hides it
+//   on screen; paths and shadow rays meet both of its sides, as the renderer's voxels and shadow
+//   maps do.
 // - Emission (Material::emission × the sRGB-decoded emissive texture, radiance) leaves only the
 //   front face: the side the interpolated vertex normal points to.
 // - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Its alpha
@@ -75,7 +78,7 @@ struct PathTracer {
 
 PathTracer createPathTracer(const Scene& scene);
 
-// The radiance arriving along `ray` (unit direction) from the chosen component.
+// The radiance arriving along the camera's `ray` (unit direction) from the chosen component.
 glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng& rng);
 
 struct RenderSettings {
