@@ -6,6 +6,7 @@
 #define VCT_CONE_TRACING_GLSL
 
 #include "perpendicular.glsl"
+#include "sky.glsl"
 #include "voxel_grid.h"
 
 // The volume seen by a cone travelling along `direction`: isotropic, or (anisotropic voxels) the
@@ -164,7 +165,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     // What the cone did not meet, having left the grid or gone its maximum distance, it meets in
     // the sky (a cone the maximum distance cuts short inside a room sees the sky through its walls:
     // the distance is a setting for open scenes).
-    if (alpha < stopOpacity) result.radiance += (1.0f - alpha) * frame.environment.rgb;
+    if (alpha < stopOpacity) result.radiance += (1.0f - alpha) * skyRadiance(direction, tanHalfAperture);
     result.occlusion = clamp(occlusion, 0.0f, 1.0f);
     return result;
 }

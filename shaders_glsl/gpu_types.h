@@ -108,7 +108,8 @@ struct FrameConstants {
     uint debugVoxelMip;   // the mip level the voxel debug views show
     uint diffuseDownscale;  // diffuse cones traced once per diffuseDownscale² samples (1 = every sample)
     uint unused1;
-    vec4 environment;  // rgb: the sky's radiance (Scene::environment), seen by cones that leave the grid
+    vec4 environment;  // rgb: the sky's radiance (Scene::environment), seen by cones that leave the grid;
+                       // w = 1: an environment image is bound, and rgb multiplies it (sky.glsl)
 };
 
 // What the shading pass shows instead of light (FrameConstants.debugView), for understanding.

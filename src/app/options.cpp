@@ -138,9 +138,10 @@ std::vector<Option> makeSharedOptions() {
         {"light-intensity", "E",
          "illuminance (lux) of the scene's first sun, or of the one --light-dir adds (default 3); "
          "refused without --light-dir if the scene has no sun"},
-        {"environment", "R,G,B",
-         "radiance of a uniform sky that every ray leaving the scene sees (default black; a scene "
-         "without light gets a default sky with its default sun)"},
+        {"environment", "R,G,B|FILE.hdr",
+         "the sky every ray leaving the scene sees: a uniform radiance, or an equirectangular Radiance "
+         "image (its centre looks along -Z, its top up) (default black; a scene without light gets a "
+         "default sky with its default sun)"},
         {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},
         {"validate", "", "enable the Khronos validation layer"},
         {"strict", "", "treat scene warnings (e.g. a missing texture) as errors"},

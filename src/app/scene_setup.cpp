@@ -21,8 +21,16 @@ SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
         throw Error("--light-dir must not be the zero vector");
     if (arguments.has("light-intensity"))
         overrides.lightIntensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
-    overrides.environment = arguments.vector3("environment");
-    if (overrides.environment) checkSkyRadiance(*overrides.environment);
+    const std::string environment = arguments.text("environment", "");
+    if (namesEnvironmentImage(environment)) {
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(environment, error))
+            throw Error(environment + ": environment image not found");
+        overrides.environmentImage = environment;
+    } else {
+        overrides.environment = arguments.vector3("environment");
+        if (overrides.environment) checkSkyRadiance(*overrides.environment);
+    }
     return overrides;
 }
 
@@ -53,9 +61,15 @@ Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits
     // --light-dir's sun is light enough, and so is --environment's sky; --light-intensity alone
     // sets the default sun's.
     if (overrides.environment) scene.environment = *overrides.environment;
+    if (!overrides.environmentImage.empty()) useEnvironmentImage(scene, loadEnvironmentImage(overrides));
     if (!overrides.lightDirection) addDefaultSunAndSkyIfUnlit(scene);
     applySceneOverrides(overrides, scene);
     return scene;
+}
+
+std::shared_ptr<const EnvironmentMap> loadEnvironmentImage(const SceneOverrides& overrides) {
+    if (overrides.environmentImage.empty()) return nullptr;
+    return std::make_shared<const EnvironmentMap>(loadEnvironmentMap(overrides.environmentImage));
 }
 
 void printSceneWarnings(const Scene& scene) {

@@ -21,6 +21,7 @@ struct SceneOverrides {
     std::optional<glm::vec3> lightDirection;  // not the zero vector
     std::optional<float> lightIntensity;
     std::optional<glm::vec3> environment;  // finite, not negative
+    std::string environmentImage;          // --environment FILE.hdr: the sky's image (the file exists)
 };
 SceneOverrides sceneOverridesFromArguments(const Arguments& arguments);
 
@@ -35,6 +36,8 @@ void checkSceneName(const std::string& scene, const std::string& option);
 // --light-dir), then the overrides; a file naming more geometry than `limits` allow is refused
 // before it is read. The scene's warnings (the default sun's among them) are for the caller to show.
 Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits& limits = {});
+// --environment FILE.hdr read (null without one); a file that cannot be is a vct::Error naming it.
+std::shared_ptr<const EnvironmentMap> loadEnvironmentImage(const SceneOverrides& overrides);
 // "warning: ..." on stderr, one line each.
 void printSceneWarnings(const Scene& scene);
 ContextOptions contextOptionsFromArguments(const Arguments& arguments);

@@ -111,6 +111,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     checkSceneArguments(arguments);
     options.scene = loadSceneFromArguments(arguments);
     options.environment = sceneOverridesFromArguments(arguments).environment;
+    options.environmentMap = options.scene.environmentMap;  // read once, for every scene opened
     printSceneWarnings(options.scene);
     return runViewer(std::move(options));
 }

@@ -72,7 +72,7 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
 }
 
 void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                              const VoxelVolumes& volumes, const glm::mat4& viewProjection) {
+                              const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection) {
     const VkSampler volumeSampler = volumes.sampler.sampler, point = pointSampler.sampler;
     const Reduced& now = reduced[frameCount_ % 2];
     const Reduced& last = reduced[(frameCount_ + 1) % 2];
@@ -119,6 +119,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
             .sampledImage(7, gbuffer.normal.view, point)
             .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceListPipeline.layout);
         vkCmdPushConstants(commands, traceListPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(targetDownscale),
                            &targetDownscale);

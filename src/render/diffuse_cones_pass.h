@@ -10,6 +10,7 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/gbuffer_pass.h"
+#include "render/sky_image.h"
 #include "render/voxel_volumes.h"
 
 namespace vct {
@@ -22,7 +23,7 @@ struct DiffuseConesPass {
     // Leaves diffuse() in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
     // `viewProjection` is the G-buffer's: the next frame finds this frame's light through it.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                const VoxelVolumes& volumes, const glm::mat4& viewProjection);
+                const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection);
     // The light the last frames gathered no longer holds (the voxels' light was recomputed, or the
     // cones changed): the next frame traces every block.
     void forgetHistory() { haveHistory_ = false; }

@@ -45,7 +45,7 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
 }
 
 void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
-                              Slice slice) {
+                              const SkyImage& sky, Slice slice) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.pipeline);
     const VkSampler sampler = volumes.sampler.sampler;
     DescriptorPush()
@@ -57,6 +57,7 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
         .buffer(10, volumes.occupiedVoxels.buffer)
         .buffer(11, volumes.occupiedDispatch.buffer)
         .sampledImages(12, volumes.directionalViews(), sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.layout);
     vkCmdPushConstants(commands, gatherPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);
     // The slice is a fraction of the list: the invocations past it return at once.

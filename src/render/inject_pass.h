@@ -6,6 +6,7 @@
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
 #include "render/shadow_pass.h"
+#include "render/sky_image.h"
 #include "render/voxel_volumes.h"
 
 namespace vct {
@@ -24,7 +25,8 @@ struct InjectPass {
     struct Slice {
         uint32_t count = 1, phase = 0;
     };
-    void recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes, Slice slice);
+    void recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
+                      const SkyImage& sky, Slice slice);
 
     Pipeline pipeline;
     Pipeline gatherPipeline;

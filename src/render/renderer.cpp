@@ -80,6 +80,8 @@ void Renderer::setGeometry(const Scene& scene) {
     areaLights_ = findAreaLights(local);
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     environment_ = scene.environment;
+    sky_ = std::make_unique<SkyImage>(context_, scene.environmentMap.get());
+    skyMean_ = scene.environmentMap ? meanEnvironmentRadiance(*scene.environmentMap) : glm::vec3(1.0f);
     brightestEmission_ = 0.0f;
     anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
         return material.metallic > 0.0f || material.specularWeight > 0.0f;
@@ -146,7 +148,8 @@ void Renderer::setLights(const std::vector<Light>& lights) {
     Material brightest;
     // The sky stands beside the brightest emitter: light it bounces into a scene lit by nothing
     // else must fit in float16 as well.
-    brightest.emission = glm::vec3(std::max({brightestEmission_, environment_.r, environment_.g, environment_.b}));
+    const glm::vec3 sky = environment_ * skyMean_;
+    brightest.emission = glm::vec3(std::max({brightestEmission_, sky.r, sky.g, sky.b}));
     emitters.materials.push_back(brightest);
     radianceScale_ = radianceStorageScale(lights_, emitters, grid_.originVoxelSize.w);
     stale_.shadows = true;
@@ -201,7 +204,7 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.skipEmptySpace = shading.skipEmptySpace ? 1u : 0u;
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
-    constants.environment = glm::vec4(environment_, 0.0f);
+    constants.environment = glm::vec4(environment_, sky_->mapped() ? 1.0f : 0.0f);
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
     return constants.viewProjection;
 }
@@ -261,7 +264,7 @@ FrameStats Renderer::renderFrame() {
             // dropping to one bounce. Otherwise every frame that re-lights starts from the light
             // sources alone: the same inputs, the same image.
             run(commands, Pass::Inject, [&] {
-                if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, slice);
+                if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, slice);
                 injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_,
                                    progressive);
             });
@@ -289,7 +292,7 @@ FrameStats Renderer::renderFrame() {
         for (uint32_t i = 0; i < more && !(converging && converged); ++i) {
             submit([&](VkCommandBuffer commands) {
                 run(commands, Pass::Bounce, [&] {
-                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, {});
+                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {});
                     injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
                     mipsPass_.record(commands, *volumes_);
                     if (converging) recordMeanRadiance(commands);
@@ -302,7 +305,8 @@ FrameStats Renderer::renderFrame() {
     submit([&](VkCommandBuffer commands) {
         run(commands, Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
         run(commands, Pass::DiffuseCones, [&] {
-            diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_, viewProjection);
+            diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_, *sky_,
+                                      viewProjection);
         });
         run(commands, Pass::Shade, [&] {
             const bool reducedDiffuse = plan.runs(Pass::DiffuseCones);
@@ -314,8 +318,12 @@ FrameStats Renderer::renderFrame() {
                 .tracesSpecularCone = anySpecularMaterial_ && effectiveComponents(settings_.shading).indirectSpecular,
                 .areaLights = !areaLights_.empty() && settings_.shading.components.areaLights,
             };
-            const ShadeInputs inputs{frameConstants_.buffer, sceneGpu_->materials.buffer, lightBuffers(),
-                                     reducedDiffuse ? diffuseConesPass_->diffuse().view : VK_NULL_HANDLE, variant};
+            const ShadeInputs inputs{frameConstants_.buffer,
+                                     sceneGpu_->materials.buffer,
+                                     lightBuffers(),
+                                     reducedDiffuse ? diffuseConesPass_->diffuse().view : VK_NULL_HANDLE,
+                                     variant,
+                                     sky_.get()};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });

@@ -24,6 +24,7 @@
 #include "render/settings.h"
 #include "render/shade_pass.h"
 #include "render/shadow_pass.h"
+#include "render/sky_image.h"
 #include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
 #include "scene/scene.h"
@@ -59,7 +60,8 @@ public:
     // and shadow maps are rebuilt on the next frame. Lights and camera stay as they are.
     void setGeometry(const Scene& scene);
     const std::vector<Light>& lights() const { return lights_; }
-    // The sky's radiance (Scene::environment); a change converges the light again, as setLights.
+    // The sky's radiance (Scene::environment), or the factor on its environment image; a change
+    // converges the light again, as setLights.
     void setEnvironment(glm::vec3 environment);
     glm::vec3 environment() const { return environment_; }
     const RenderSettings& settings() const { return settings_; }
@@ -107,6 +109,8 @@ private:
     Camera camera_;
     std::vector<Light> lights_;
     glm::vec3 environment_{0.0f};        // Scene::environment
+    std::unique_ptr<SkyImage> sky_;      // Scene::environmentMap, or the placeholder
+    glm::vec3 skyMean_{1.0f};            // the environment image's mean radiance (1 without one)
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass

@@ -64,6 +64,7 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(16, gbuffer.emissive.view, pointSampler.sampler)
             .sampledImage(18, shadows.areaMaps.view, shadows.compareSampler.sampler)
             .sampledImage(19, shadows.areaMaps.view, pointSampler.sampler)
+            .sampledImage(glsl::SKY_BINDING, inputs.sky->view(), inputs.sky->sampler())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.layout);
     });
     imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

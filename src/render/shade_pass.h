@@ -8,6 +8,7 @@
 #include "gpu/resources.h"
 #include "render/gbuffer_pass.h"
 #include "render/shadow_pass.h"
+#include "render/sky_image.h"
 #include "render/voxel_volumes.h"
 
 namespace vct {
@@ -31,6 +32,7 @@ struct ShadeInputs {
     LightBuffers lights;
     VkImageView reducedDiffuse = VK_NULL_HANDLE;  // DiffuseConesPass::diffuse, when the cones run reduced
     ShadeVariant variant;
+    const SkyImage* sky = nullptr;  // required
 };
 
 struct ShadePass {

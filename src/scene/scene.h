@@ -8,11 +8,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "scene/environment_map.h"
 
 namespace vct {
 
@@ -134,8 +137,10 @@ struct Scene {
     std::vector<Camera> cameras;  // the first is the default view
     // Radiance (scene units) of the sky that every ray leaving the scene sees, the same in every
     // direction: black unless the command line sets it or the scene has no light of its own.
+    // With an environment image, the factor its radiance is multiplied by (1 as loaded).
     glm::vec3 environment{0.0f};
-    std::vector<std::string> warnings;  // non-fatal problems met while loading
+    std::shared_ptr<const EnvironmentMap> environmentMap;  // --environment FILE.hdr; shared, never copied
+    std::vector<std::string> warnings;                     // non-fatal problems met while loading
 
     size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;

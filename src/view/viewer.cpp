@@ -282,6 +282,7 @@ bool Viewer::loadScene(const std::string& name) {
     }
     if (loaded.cameras.empty()) loaded.cameras.push_back(defaultCamera(loaded.bounds()));
     if (options_.environment) loaded.environment = *options_.environment;
+    useEnvironmentImage(loaded, options_.environmentMap);
     addDefaultSunAndSkyIfUnlit(loaded);  // as `vct render` would light it
     Scene previous = std::move(scene_);
     scene_ = std::move(loaded);

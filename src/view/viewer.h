@@ -18,7 +18,8 @@ struct ViewerOptions {
     Scene scene;
     std::string sceneName;
     std::optional<glm::vec3> environment;  // --environment: the sky of every scene opened, dropped ones too
-    RenderSettings settings;               // width and height: the window's initial size
+    std::shared_ptr<const EnvironmentMap> environmentMap;  // --environment FILE.hdr, likewise
+    RenderSettings settings;                               // width and height: the window's initial size
     // Used instead of `settings` on a software rasterizer, where those would not be interactive
     // (none: `settings` everywhere).
     std::optional<RenderSettings> softwareSettings;

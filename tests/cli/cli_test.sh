@@ -333,6 +333,23 @@ case "$case_name" in
   environment-negative)
     expect_refusal "\-\-environment must be a radiance from 0 to 1e9 in each of red, green and blue" \
       --environment 0.1,-1,0.2 --out "$good" ;;
+  environment-image-missing)
+    expect_refusal_before_any_work render "$work/sky.hdr: environment image not found" \
+      --environment "$work/sky.hdr" --out "$good" ;;
+  environment-image-not-hdr)
+    printf 'not an image at all\n' >"$work/sky.hdr"
+    expect_refusal "$work/sky.hdr: not an image stb_image can read" --environment "$work/sky.hdr" \
+      "${small[@]}" --out "$good" ;;
+  environment-image-lights-the-scene)
+    # A 4 × 2 Radiance image, uncompressed: a blue upper row (r 0.25, g 0.5, b 1 as mantissas of
+    # 2^0) over a black lower one, read end to end from the command line into a render.
+    { printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n'
+      for i in 1 2 3 4; do printf '\x40\x80\xff\x80'; done
+      for i in 1 2 3 4; do printf '\x00\x00\x00\x00'; done; } >"$work/sky.hdr"
+    "$vct" render "${small[@]}" --environment "$work/sky.hdr" --out "$work/sky.pfm" \
+      >"$work/stdout" 2>"$work/stderr" || fail "render failed"
+    [ -s "$work/sky.pfm" ] || fail "no image"
+    echo "ok: rendered under an environment image" ;;
   help-names-every-option-once)
     # The help is made from the option table: each option appears once, settings with their default.
     "$vct" render --help >"$work/stdout" 2>"$work/stderr" || fail "--help failed"

@@ -13,6 +13,7 @@
 #include "gpu_test.h"
 #include "gpu_types.h"
 #include "render/mips_pass.h"
+#include "render/sky_image.h"
 #include "render/voxel_grid_fit.h"
 #include "render/voxel_volumes.h"
 
@@ -108,6 +109,7 @@ protected:
         std::memcpy(probeBuffer.mapped, probes.data(), probes.size() * sizeof(Probe));
         Buffer results(context, probes.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         const Pipeline pipeline = createComputePipeline(context, "cone_probe.comp");
+        const SkyImage sky(context, nullptr);  // the uniform sky of frame.environment
         const uint32_t count = uint32_t(probes.size());
         submitAndWait(context, [&](VkCommandBuffer commands) {
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
@@ -117,6 +119,7 @@ protected:
                 .sampledImage(1, volume().view, volumes->sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
                 .buffer(2, probeBuffer.buffer)
                 .buffer(3, results.buffer)
+                .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
                 .push(context, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
             vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(count), &count);
             vkCmdDispatch(commands, (count + 63) / 64, 1, 1);

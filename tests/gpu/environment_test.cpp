@@ -1,12 +1,15 @@
 // The sky (Scene::environment): seen by camera rays that meet nothing, gathered by the cones that
 // leave the voxel grid, and reflected by the specular cone, against analytic values; and hidden
-// from the ground by a slab hovering closer than the cones' start offset (cone_start.glsl).
+// from the ground by a slab hovering closer than the cones' start offset (cone_start.glsl). An
+// environment image (Scene::environmentMap) is seen where its directions point and lights as the
+// uniform sky of its radiance does.
 #include <array>
 #include <cmath>
 #include <cstdio>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "../cpu/environment_images.h"
 #include "gpu_test.h"
 #include "render/renderer.h"
 
@@ -158,6 +161,51 @@ TEST_F(Environment, UnderASlabTheGroundSeesTheSlabNotTheSkyThroughIt) {
     // The truth: the sky through the gap, below 5° of elevation, 0.8 % of the open ground's. Cones
     // starting inside the slab gathered 13.5 %.
     for (int c = 0; c < 3; ++c) EXPECT_LT(underTheSlab[c], 0.03f * 0.5f * kSky[c]);
+}
+
+TEST_F(Environment, AnImageOfOneRadianceLightsThePlaneAsThatUniformSkyDoes) {
+    // The same plane under a 32 × 16 image holding kSky in every texel: the cones read it through
+    // its mip chain, so plane and sky must come out as under the uniform sky (the test above).
+    Material grey;
+    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    grey.metallic = 0.0f;
+    grey.specularWeight = 0.0f;
+    Scene scene = planeUnderTheSky(grey);
+    scene.environment = glm::vec3(2.0f);  // the factor on the image
+    scene.environmentMap = makeEnvironmentMap(32, 16, [](uint32_t, uint32_t) { return 0.5f * kSky; });
+    Renderer renderer(gpu(), scene, smallSettings(RenderMode::Full));
+    renderer.renderFrame();
+    const PlaneAndSky seen = measure(renderer.readImage());
+    std::printf("[ sky image ] plane (%.4f %.4f %.4f), sky (%.4f %.4f %.4f)\n", seen.plane.r, seen.plane.g,
+                seen.plane.b, seen.sky.r, seen.sky.g, seen.sky.b);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(seen.plane[c], 0.5f * kSky[c], 0.02f * 0.5f * kSky[c]);
+        EXPECT_NEAR(seen.sky[c], kSky[c], 1e-3f);
+    }
+}
+
+TEST_F(Environment, TheCameraSeesTheImageWhereItsDirectionsPoint) {
+    // Looking along −Z over the plane with a 30° view: the sky above the horizon is red on the left
+    // (x < 0) and green on the right, as the image's halves (the path tracer reads the same); the
+    // ±3° around the meridian blend the two, and the rows near the horizon the black below it.
+    Scene scene = planeUnderTheSky(Material{});
+    scene.environment = glm::vec3(1.0f);
+    scene.environmentMap = redLeftGreenRightSky();
+    Camera& camera = scene.cameras.front();
+    camera.position = glm::vec3(0.0f, 1.0f, 3.0f);
+    camera.forward = glm::vec3(0.0f, 0.0f, -1.0f);
+    camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.yfov = glm::radians(30.0f);
+    Renderer renderer(gpu(), scene, smallSettings(RenderMode::Direct));
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    for (uint32_t y = 0; y < 10; ++y)
+        for (uint32_t x = 0; x < 32; ++x) {
+            if (x >= 12 && x < 20) continue;
+            const glm::vec3 seen = glm::make_vec3(image.pixel(x, y));
+            const glm::vec3 expected = x < 16 ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], expected[c], 1e-3f) << x << "," << y << " channel " << c;
+        }
 }
 
 }  // namespace

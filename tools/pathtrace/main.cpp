@@ -32,9 +32,11 @@ constexpr const char* kUsage =
     "  --time-limit SEC          stop after the pass that exceeds SEC, with fewer samples\n"
     "  --max-depth N             surface interactions that gather light: 1 = direct light only, 2 adds\n"
     "                            one bounce of indirect light, N adds N - 1 (default: every bounce)\n"
-    "  --environment R,G,B       radiance of a uniform sky (default black; a scene without light gets\n"
-    "                            the default sun and sky, as in vct render). The sky camera rays meet is\n"
-    "                            direct light, the sky's light on surfaces indirect\n"
+    "  --environment R,G,B|FILE.hdr\n"
+    "                            the sky: a uniform radiance or an equirectangular Radiance image, as in\n"
+    "                            vct render (default black; a scene without light gets the default sun\n"
+    "                            and sky). The sky camera rays meet is direct light, the sky's light on\n"
+    "                            surfaces indirect\n"
     "  --camera-pos x,y,z --camera-target x,y,z --fov DEGREES\n"
     "                            override the scene's first camera (+Y up, vertical field of view)\n"
     "Writes FILE.pfm (linear radiance; .png also works) and FILE.json (spp, seconds, noise).\n";
@@ -47,6 +49,7 @@ struct Options {
     std::optional<float> fovDegrees;
     std::optional<uint32_t> maxDepth;
     std::optional<glm::vec3> environment;
+    std::string environmentImage;  // --environment FILE.hdr
 };
 
 template <typename T>
@@ -95,6 +98,7 @@ Options parseOptions(int argc, char** argv) {
         else if (option == "--camera-pos") options.cameraPosition = parseVector(option, value);
         else if (option == "--camera-target") options.cameraTarget = parseVector(option, value);
         else if (option == "--fov") options.fovDegrees = parseNumber<float>(option, value);
+        else if (option == "--environment" && vct::namesEnvironmentImage(value)) options.environmentImage = value;
         else if (option == "--environment") options.environment = parseVector(option, value);
         else if (option == "--mode") {
             if (value == "full") s.component = pt::Component::Full;
@@ -155,6 +159,9 @@ int run(int argc, char** argv) {
     Options options = parseOptions(argc, argv);
     vct::Scene scene = vct::loadScene(options.scene);
     if (options.environment) scene.environment = *options.environment;
+    if (!options.environmentImage.empty())
+        vct::useEnvironmentImage(
+            scene, std::make_shared<const vct::EnvironmentMap>(vct::loadEnvironmentMap(options.environmentImage)));
     vct::addDefaultSunAndSkyIfUnlit(scene);  // the light `vct render` gives a scene without any
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     options.settings.camera = chooseCamera(scene, options);

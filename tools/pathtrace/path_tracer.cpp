@@ -308,6 +308,12 @@ bool unoccluded(const PathTracer& tracer, const SurfacePoint& s, const glm::vec3
     return !anyHit(tracer.bvh, ray, alphaFilter(tracer, rng));
 }
 
+// The sky seen along `direction`: Scene::environment, times the environment image where there is one.
+glm::vec3 skyRadiance(const Scene& scene, const glm::vec3& direction) {
+    return scene.environmentMap ? scene.environment * environmentRadiance(*scene.environmentMap, direction)
+                                : scene.environment;
+}
+
 // Light from the punctual lights, by KHR_lights_punctual's falloff (shaders_glsl/lights.h).
 glm::vec3 punctualLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rng) {
     glm::vec3 sum(0.0f);
@@ -417,9 +423,10 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
             tracer.bvh, ray, depth == 1 ? cameraFilter(tracer, ray.direction, rng) : alphaFilter(tracer, rng));
         if (!hit) {
             // The sky: seen by the camera it is direct light, as an emitter seen is; on a surface
-            // it is indirect light, which is where the renderer's cones gather it. Uniform, so
-            // BRDF sampling alone finds it without much noise.
-            if (depth == 1 ? wantDirect : wantIndirect) radiance += throughput * tracer.scene->environment;
+            // it is indirect light, which is where the renderer's cones gather it. Found by BRDF
+            // sampling alone: without noise for a uniform sky, noisier for an image with a sun in it.
+            if (depth == 1 ? wantDirect : wantIndirect)
+                radiance += throughput * skyRadiance(*tracer.scene, ray.direction);
             break;
         }
         const SurfacePoint s = surfaceAt(tracer, *hit, ray.direction);

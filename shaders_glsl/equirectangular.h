@@ -1,0 +1,31 @@
+// Where an equirectangular environment image (--environment FILE.hdr) is read for a direction, the
+// same for the renderer and the reference path tracer: the image's centre column looks along −Z
+// (glTF's forward), u grows towards +X, and its top row is +Y. The column at u = 0 and 1 looks
+// along +Z, where the image wraps.
+#ifndef VCT_EQUIRECTANGULAR_H
+#define VCT_EQUIRECTANGULAR_H
+
+#include "cpp_glsl.h"
+
+VCT_SHARED_BEGIN
+
+// The binding of the environment image (sky.glsl) in every pass that traces cones or shows the sky.
+const uint SKY_BINDING = 30u;
+
+// (u, v) in [0, 1]² of the unit `direction`.
+SHARED_FN vec2 equirectangularCoordinates(vec3 direction) {
+    float u = 0.5f + atan(direction.x, -direction.z) * 0.15915494f;  // 1 / 2π
+    float v = acos(clamp(direction.y, -1.0f, 1.0f)) * 0.31830989f;   // 1 / π
+    return vec2(u, v);
+}
+
+// The mip level of a `width`-texel-wide image whose texels span a cone of half-angle tangent
+// `tanHalfAperture`: along the equator a texel spans 2π / width radians.
+SHARED_FN float equirectangularLevel(float tanHalfAperture, float width) {
+    float coneAngle = 2.0f * atan(tanHalfAperture);
+    return max(log2(max(coneAngle * width * 0.15915494f, 1e-6f)), 0.0f);
+}
+
+VCT_SHARED_END
+
+#endif

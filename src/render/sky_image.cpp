@@ -1,0 +1,110 @@
+#include "render/sky_image.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <glm/gtc/packing.hpp>
+
+#include "gpu/commands.h"
+
+namespace vct {
+namespace {
+
+// One level of the chain: float RGBA, rows from the top.
+struct Level {
+    uint32_t width, height;
+    std::vector<float> rgba;
+};
+
+// Each level the box-filtered half of the one above (an odd last row or column counted once more):
+// the mean radiance of the directions each texel covers, as the cones want it. Down to 1 × 1.
+std::vector<Level> mipChain(const EnvironmentMap& map) {
+    std::vector<Level> levels{{map.width, map.height, map.rgba}};
+    while (levels.back().width > 1 || levels.back().height > 1) {
+        const Level& above = levels.back();
+        Level level{std::max(above.width / 2, 1u), std::max(above.height / 2, 1u), {}};
+        level.rgba.resize(size_t(level.width) * level.height * 4);
+        for (uint32_t y = 0; y < level.height; ++y)
+            for (uint32_t x = 0; x < level.width; ++x)
+                for (uint32_t c = 0; c < 4; ++c) {
+                    float sum = 0.0f;
+                    for (uint32_t dy = 0; dy < 2; ++dy)
+                        for (uint32_t dx = 0; dx < 2; ++dx) {
+                            const uint32_t sx = std::min(2 * x + dx, above.width - 1);
+                            const uint32_t sy = std::min(2 * y + dy, above.height - 1);
+                            sum += above.rgba[4 * (size_t(sy) * above.width + sx) + c];
+                        }
+                    level.rgba[4 * (size_t(y) * level.width + x) + c] = 0.25f * sum;
+                }
+        levels.push_back(std::move(level));
+    }
+    return levels;
+}
+
+bool filtersLinearly(GpuContext& context, VkFormat format) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(context.physicalDevice, format, &properties);
+    return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+}
+
+}  // namespace
+
+SkyImage::SkyImage(GpuContext& context, const EnvironmentMap* map) : mapped_(map && map->width > 0) {
+    EnvironmentMap placeholder;
+    placeholder.width = placeholder.height = 1;
+    placeholder.rgba = {1.0f, 1.0f, 1.0f, 1.0f};
+    const std::vector<Level> levels = mipChain(mapped_ ? *map : placeholder);
+    // 32-bit floats keep a sun's radiance whole; a device that cannot filter them gets half
+    // floats (filtering them is required), which hold up to 65504.
+    const bool full = filtersLinearly(context, VK_FORMAT_R32G32B32A32_SFLOAT);
+    ImageDesc desc;
+    desc.format = full ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.extent = {levels[0].width, levels[0].height, 1};
+    desc.mipLevels = uint32_t(levels.size());
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    desc.debugName = "sky image";
+    image_ = GpuImage(context, desc);
+
+    const size_t texelBytes = full ? 16 : 8;
+    VkDeviceSize total = 0;
+    for (const Level& level : levels) total += VkDeviceSize(level.rgba.size() / 4) * texelBytes;
+    Buffer staging(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    std::vector<VkBufferImageCopy> regions;
+    VkDeviceSize offset = 0;
+    for (uint32_t i = 0; i < levels.size(); ++i) {
+        const Level& level = levels[i];
+        auto* bytes = static_cast<uint8_t*>(staging.mapped) + offset;
+        if (full) {
+            std::memcpy(bytes, level.rgba.data(), level.rgba.size() * sizeof(float));
+        } else {
+            for (size_t t = 0; t < level.rgba.size(); ++t) {
+                const uint16_t half = glm::packHalf1x16(std::min(level.rgba[t], 65504.0f));
+                std::memcpy(bytes + 2 * t, &half, 2);
+            }
+        }
+        VkBufferImageCopy region{};
+        region.bufferOffset = offset;
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, 1};
+        region.imageExtent = {level.width, level.height, 1};
+        regions.push_back(region);
+        offset += VkDeviceSize(level.rgba.size() / 4) * texelBytes;
+    }
+    submitAndWait(context, [&](VkCommandBuffer commands) {
+        imageBarrier(commands, image_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, desc.mipLevels);
+        vkCmdCopyBufferToImage(commands, staging.buffer, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               uint32_t(regions.size()), regions.data());
+        imageBarrier(commands, image_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, 0, desc.mipLevels);
+    });
+    // Around the horizon the image wraps; at the poles it ends.
+    VkSamplerCreateInfo info = linearClampSampler();
+    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    sampler_ = Sampler(context, info);
+}
+
+}  // namespace vct
