@@ -78,7 +78,7 @@ void main() {
     // The side is the interpolated normal's; a normal texture tilts the normal of that side.
     bool frontFace = dot(normal, toCamera) >= 0.0f;
     if (material.normalTexture >= 0) {
-        // ∂position/∂u from screen-space derivatives (no tangents are stored), u the normal
+        // ∂position/∂u and ∂v from screen-space derivatives (no tangents are stored), u, v the normal
         // texture's own (after its transform): the same frame the path tracer takes from the
         // triangle's edges. The ratio is the same whichever way the screen's y runs. The
         // coordinates' derivatives are the interpolated sets' through the transform: lavapipe's
@@ -89,8 +89,9 @@ void main() {
         float determinant = uvX.x * uvY.y - uvY.x * uvX.y;
         if (abs(determinant) > 1e-20f) {
             vec3 alongU = (uvY.y * dFdx(worldPosition) - uvX.y * dFdy(worldPosition)) / determinant;
+            vec3 alongV = (uvX.x * dFdy(worldPosition) - uvY.x * dFdx(worldPosition)) / determinant;
             vec3 texel = materialTexture(material.normalTexture, transform).rgb;
-            normal = normalFromTexture(normal, alongU, texel, material.normalScale);
+            normal = normalFromTexture(normal, alongU, alongV, texel, material.normalScale);
         }
     }
     if (!frontFace) normal = -normal;

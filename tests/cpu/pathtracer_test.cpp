@@ -334,38 +334,48 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     // A Lambertian plane facing up (u along +x, v along +z, so up the image is −z) with an 8-texel
     // normal texture tilted 30° along +u on its left half and 30° up the image on its right, lit by
     // a sun of E = π: L = max(n'·l, 0). The camera sees u ∈ [¼, ¾]; columns 0-5 and 10-15 see one
-    // half each.
+    // half each. Mirrored (u along −x, as the second half of a symmetric model), the halves swap
+    // sides, +u tilts towards −x and up the image stays −z.
     const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
     const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
-    Scene scene;
-    Texture texture;
-    texture.width = 8;
-    texture.height = 1;
-    texture.srgb = false;
-    for (uint32_t x = 0; x < 8; ++x)
-        texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
-    scene.textures.push_back(texture);
-    Material material = lambertian(glm::vec3(1.0f));
-    material.normalTexture.index = 0;
-    addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
-    const glm::vec3 toSun = -scene.lights.back().direction;
-    const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
+    for (const bool mirrored : {false, true}) {
+        Scene scene;
+        Texture texture;
+        texture.width = 8;
+        texture.height = 1;
+        texture.srgb = false;
+        for (uint32_t x = 0; x < 8; ++x)
+            texture.rgba8.insert(texture.rgba8.end(),
+                                 {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
+        scene.textures.push_back(texture);
+        Material material = lambertian(glm::vec3(1.0f));
+        material.normalTexture.index = 0;
+        addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
+        if (mirrored)
+            for (Vertex& vertex : scene.vertices) vertex.uv1.x = vertex.u = 1.0f - vertex.u;
+        const glm::vec3 toSun = -scene.lights.back().direction;
+        const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
 
-    auto expected = [&](glm::vec3 texel) {
-        const glm::vec3 local = glm::normalize(texel / 255.0f * 2.0f - 1.0f);
-        const glm::vec3 normal =
-            local.x * glm::vec3(1, 0, 0) + local.y * glm::vec3(0, 0, -1) + local.z * glm::vec3(0, 1, 0);
-        return std::max(glm::dot(normal, toSun), 0.0f);
-    };
-    const float alongU = expected(glm::vec3(tilt, 128, up)), upImage = expected(glm::vec3(128, tilt, up));
-    // Tilts the other way would give other light.
-    ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up))), 0.2f * alongU);
-    ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up))), 0.2f * upImage);
-    for (uint32_t y = 4; y < 12; ++y) {
-        for (uint32_t x = 0; x <= 5; ++x)
-            EXPECT_NEAR(result.image.pixel(x, y)[0], alongU, 0.01f * alongU) << x << "," << y;
-        for (uint32_t x = 10; x < 16; ++x)
-            EXPECT_NEAR(result.image.pixel(x, y)[0], upImage, 0.01f * upImage) << x << "," << y;
+        const glm::vec3 alongPlusU = mirrored ? glm::vec3(-1, 0, 0) : glm::vec3(1, 0, 0);
+        auto expected = [&](glm::vec3 texel) {
+            const glm::vec3 local = glm::normalize(texel / 255.0f * 2.0f - 1.0f);
+            const glm::vec3 normal =
+                local.x * alongPlusU + local.y * glm::vec3(0, 0, -1) + local.z * glm::vec3(0, 1, 0);
+            return std::max(glm::dot(normal, toSun), 0.0f);
+        };
+        const float alongU = expected(glm::vec3(tilt, 128, up)), upImage = expected(glm::vec3(128, tilt, up));
+        // Tilts the other way would give other light.
+        ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up))), 0.2f * alongU);
+        ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up))), 0.2f * upImage);
+        const float left = mirrored ? upImage : alongU, right = mirrored ? alongU : upImage;
+        for (uint32_t y = 4; y < 12; ++y) {
+            for (uint32_t x = 0; x <= 5; ++x)
+                EXPECT_NEAR(result.image.pixel(x, y)[0], left, 0.01f * left)
+                    << x << "," << y << " mirrored " << mirrored;
+            for (uint32_t x = 10; x < 16; ++x)
+                EXPECT_NEAR(result.image.pixel(x, y)[0], right, 0.01f * right)
+                    << x << "," << y << " mirrored " << mirrored;
+        }
     }
 }
 

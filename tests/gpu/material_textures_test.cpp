@@ -119,34 +119,46 @@ TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) 
     // A Lambertian quad whose 8-texel normal texture tilts the normal 30° along +u (towards +x, the
     // tangent) on its left half and 30° up the image (+y, the bitangent) on its right, under the
     // default sun: L = E·max(n'·l, 0)·albedo/π with n' the tilted normal, which a wrong sign on
-    // either axis would tilt the other way.
+    // either axis would tilt the other way. Mirrored (u = 1 − u, as the second half of a symmetric
+    // model), the halves swap sides, +u tilts towards −x and up the image stays +y.
     const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
     const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
     std::vector<uint16_t> texels;
     for (uint32_t x = 0; x < 8; ++x)
         texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
-    GltfBuilder gltf = quadFacingCamera();
-    gltf.document["images"] =
-        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
-    gltf.document["textures"] = json::array({{{"source", 0}}});
-    gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
-    const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
+    for (const bool mirrored : {false, true}) {
+        GltfBuilder gltf = quadFacingCamera();
+        if (mirrored) {
+            const int uvs = gltf.addVec2({{1, 1}, {0, 1}, {0, 0}, {1, 0}});
+            gltf.document["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = uvs;
+        }
+        gltf.document["images"] =
+            json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
+        gltf.document["textures"] = json::array({{{"source", 0}}});
+        gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
+        const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
 
-    auto expected = [&](glm::vec3 texel) {
-        const glm::vec3 normal = glm::normalize(texel * 2.0f - 1.0f);  // tangent x, bitangent y, normal z
-        const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
-        return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
-    };
-    const float alongU = expected(glm::vec3(tilt, 128, up) / 255.0f);
-    const float upImage = expected(glm::vec3(128, tilt, up) / 255.0f);
-    // Tilts the other way would give other light.
-    ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up) / 255.0f)), 0.2f * alongU);
-    ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up) / 255.0f)), 0.2f * upImage);
-    for (uint32_t y = 0; y < kSize; ++y) {
-        for (uint32_t x = 0; x <= 10; ++x)
-            EXPECT_NEAR(image.pixel(x, y)[0], alongU, kRelativeTolerance * alongU) << x << "," << y;
-        for (uint32_t x = 21; x < kSize; ++x)
-            EXPECT_NEAR(image.pixel(x, y)[0], upImage, kRelativeTolerance * upImage) << x << "," << y;
+        const glm::vec3 alongPlusU = mirrored ? glm::vec3(-1, 0, 0) : glm::vec3(1, 0, 0);
+        auto expected = [&](glm::vec3 texel) {
+            const glm::vec3 local = glm::normalize(texel * 2.0f - 1.0f);  // tangent x, bitangent y, normal z
+            const glm::vec3 normal = local.x * alongPlusU + local.y * glm::vec3(0, 1, 0) + local.z * glm::vec3(0, 0, 1);
+            const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
+            return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
+        };
+        const float alongU = expected(glm::vec3(tilt, 128, up) / 255.0f);
+        const float upImage = expected(glm::vec3(128, tilt, up) / 255.0f);
+        // Tilts the other way would give other light.
+        ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up) / 255.0f)), 0.2f * alongU);
+        ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up) / 255.0f)), 0.2f * upImage);
+        const float left = mirrored ? upImage : alongU, right = mirrored ? alongU : upImage;
+        for (uint32_t y = 0; y < kSize; ++y) {
+            for (uint32_t x = 0; x <= 10; ++x)
+                EXPECT_NEAR(image.pixel(x, y)[0], left, kRelativeTolerance * left)
+                    << x << "," << y << " mirrored " << mirrored;
+            for (uint32_t x = 21; x < kSize; ++x)
+                EXPECT_NEAR(image.pixel(x, y)[0], right, kRelativeTolerance * right)
+                    << x << "," << y << " mirrored " << mirrored;
+        }
     }
 }
 

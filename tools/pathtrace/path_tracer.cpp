@@ -110,17 +110,20 @@ glm::vec2 texCoordOf(const glsl::GpuTextureTransform& transform, const Vertex& v
     return glsl::transformedTexCoord(transform, glm::vec2(vertex.u, vertex.v), vertex.uv1);
 }
 
-// ∂position/∂u over the point's triangle, u the texture's own (after `transform`); zero where the
-// triangle's texture coordinates are degenerate.
-glm::vec3 alongU(const TrianglePoint& point, const glsl::GpuTextureTransform& transform) {
+// ∂position/∂u and ∂position/∂v over the point's triangle, u and v the texture's own (after
+// `transform`); zero where the triangle's texture coordinates are degenerate.
+struct TextureAxes {
+    glm::vec3 alongU{0.0f}, alongV{0.0f};
+};
+TextureAxes textureAxes(const TrianglePoint& point, const glsl::GpuTextureTransform& transform) {
     const glm::vec3 p0 = point.corners[0]->position;
+    const glm::vec3 e1 = point.corners[1]->position - p0, e2 = point.corners[2]->position - p0;
     const glm::vec2 uv0 = texCoordOf(transform, *point.corners[0]);
     const glm::vec2 uv1 = texCoordOf(transform, *point.corners[1]) - uv0;
     const glm::vec2 uv2 = texCoordOf(transform, *point.corners[2]) - uv0;
     const float determinant = uv1.x * uv2.y - uv2.x * uv1.y;
-    return std::abs(determinant) > 1e-20f
-               ? (uv2.y * (point.corners[1]->position - p0) - uv1.y * (point.corners[2]->position - p0)) / determinant
-               : glm::vec3(0.0f);
+    if (!(std::abs(determinant) > 1e-20f)) return {};
+    return {(uv2.y * e1 - uv1.y * e2) / determinant, (uv1.x * e2 - uv2.x * e1) / determinant};
 }
 
 bool hasTexture(const PathTracer& tracer, const TextureReference& reference) {
@@ -217,8 +220,8 @@ SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::v
     glm::vec3 shadingNormal = point.shadingNormal;
     if (hasTexture(tracer, material.normalTexture)) {
         const glm::vec3 texel = textureAt(tracer, material.normalTexture, transforms.normal, point);
-        shadingNormal =
-            glsl::normalFromTexture(shadingNormal, alongU(point, transforms.normal), texel, material.normalScale);
+        const TextureAxes axes = textureAxes(point, transforms.normal);
+        shadingNormal = glsl::normalFromTexture(shadingNormal, axes.alongU, axes.alongV, texel, material.normalScale);
     }
     s.shadingNormal = frontFace ? shadingNormal : -shadingNormal;
     s.geometricNormal =
