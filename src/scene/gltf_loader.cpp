@@ -126,6 +126,23 @@ std::string imageIdentity(const tinygltf::Image& image, const unsigned char* byt
     return "bytes " + std::string(reinterpret_cast<const char*>(bytes), size > 0 ? size_t(size) : 0);
 }
 
+// Whether each chunk of a PNG fits in the bytes there are (true for data that is not a PNG).
+// stb_image grows its buffer for the compressed data to what a chunk's header says before reading
+// the chunk: a corrupt length had it allocate 1.5 GB for a 2 KB file (tools/fuzz.sh's find,
+// tests/data/fuzz-regressions/png-chunk-length-past-end.glb).
+bool pngChunksFit(const unsigned char* bytes, size_t size) {
+    static const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+    if (size < 8 || std::memcmp(bytes, signature, 8) != 0) return true;
+    for (size_t at = 8; at + 8 <= size;) {
+        const uint64_t length = uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 |
+                                uint64_t(bytes[at + 2]) << 8 | uint64_t(bytes[at + 3]);
+        if (length + 12 > size - at) return false;  // length, type, data, CRC
+        if (std::memcmp(bytes + at + 4, "IEND", 4) == 0) return true;
+        at += size_t(length) + 12;
+    }
+    return true;
+}
+
 // Decodes a material texture's image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
 // is noted for the loader to report as a warning; only a range the file does not hold stops the load.
 bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
@@ -151,6 +168,10 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
     }
     const std::string name = image->uri.empty() ? "the embedded image" : "'" + image->uri + "'";
     int width = 0, height = 0, channels = 0;
+    if (size > 0 && !pngChunksFit(bytes, size_t(size))) {
+        context.imageProblems[imageIndex] = name + " is a corrupt PNG: a chunk runs past the end of its bytes";
+        return true;
+    }
     if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
         context.imageProblems[imageIndex] = name + " is not an image stb_image can decode (PNG, JPEG...)";
         return true;

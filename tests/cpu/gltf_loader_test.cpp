@@ -486,6 +486,22 @@ TEST(GltfLoader, ImageNamedByManyEntriesIsDecodedOnce) {
     EXPECT_EQ(scene.textures.size(), 1u);
 }
 
+TEST(GltfLoader, APngWhoseChunkRunsPastItsEndIsACorruptImageNotAnAllocation) {
+    // A valid 2×2 PNG whose image-data chunk header then claims 1.5 GB: stb_image would grow its
+    // buffer to that before finding the bytes missing (the fuzzer's find). The texture is dropped
+    // with a warning saying so, as an image it cannot decode is.
+    TempFolder folder;
+    std::string png = test::encodePng(2, 2, 4, 8, std::vector<uint16_t>(16, 200));
+    const size_t idat = png.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    png.replace(idat - 4, 4, std::string("\x5d\x00\x00\x11", 4));
+    GltfBuilder gltf = manyTexturedMaterials(1, {"data:image/png;base64," + test::base64(png)});
+    const Scene scene = loadGltf(gltf.writeGltf(folder, "scene").string());
+    EXPECT_TRUE(scene.textures.empty());
+    ASSERT_FALSE(scene.warnings.empty());
+    EXPECT_NE(scene.warnings[0].find("corrupt PNG: a chunk runs past the end"), std::string::npos) << scene.warnings[0];
+}
+
 TEST(GltfLoader, DecodedImagesOverTheBudgetAreRefusedFromTheirHeaders) {
     // Five files of a few dozen bytes whose headers claim 8192² pixels, 256 MiB each decoded: the
     // fifth would bring the scene's images past the default budget of 1 GiB, and the header says so
