@@ -21,14 +21,9 @@ constexpr float kOccluderEdgeMargin = 0.03f;
 constexpr float kShadowEdgeMargin = 0.06f;
 
 RenderSettings directLightSettings() {
-    RenderSettings settings;
-    settings.image.width = kSize;
-    settings.image.height = kSize;
-    settings.image.supersample = 1;
-    settings.resources.voxelResolution = 32;
+    RenderSettings settings = smallRenderSettings(kSize, RenderMode::Direct);
     settings.resources.bounces = 1;
     settings.resources.sunShadowMapSize = 512;
-    settings.shading.mode = RenderMode::Direct;
     return settings;
 }
 

@@ -15,14 +15,9 @@ constexpr float kTolerance = 0.05f;  // of the lit radiance, 1
 // The direct light where the camera's rays cross both the occluder and, behind it, the wall within
 // ±0.9 of their middle (the wall's points, farther away, fill more of the view).
 std::vector<glm::vec3> occluderPixels(const Scene& scene) {
-    RenderSettings settings;
-    settings.image.width = kSize;
-    settings.image.height = kSize;
-    settings.image.supersample = 1;
-    settings.resources.voxelResolution = 32;
+    RenderSettings settings = smallRenderSettings(kSize, RenderMode::Direct);
     settings.resources.bounces = 1;
     settings.resources.sunShadowMapSize = 512;
-    settings.shading.mode = RenderMode::Direct;
     Renderer renderer(gpu(), scene, settings);
     renderer.renderFrame();
     const Image image = renderer.readImage();

@@ -5,10 +5,25 @@
 #include <gtest/gtest.h>
 
 #include "gpu/context.h"
+#include "render/settings.h"
 
 namespace vct::test {
 
 GpuContext& gpu();
+
+// What the small render tests start from: a square image of `size` pixels, one sample a pixel, a
+// 32³ grid, small shadow maps (256² for suns, 128² for the rest) and `mode`.
+inline RenderSettings smallRenderSettings(uint32_t size, RenderMode mode) {
+    RenderSettings settings;
+    settings.image.width = size;
+    settings.image.height = size;
+    settings.image.supersample = 1;
+    settings.resources.voxelResolution = 32;
+    settings.resources.sunShadowMapSize = 256;
+    settings.resources.localShadowMapSize = 128;
+    settings.shading.mode = mode;
+    return settings;
+}
 
 class GpuTest : public ::testing::Test {
 protected:

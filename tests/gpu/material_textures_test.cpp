@@ -14,17 +14,7 @@ namespace {
 constexpr uint32_t kSize = 32;
 constexpr float kRelativeTolerance = 0.01f;
 
-RenderSettings directSettings() {
-    RenderSettings settings;
-    settings.image.width = kSize;
-    settings.image.height = kSize;
-    settings.image.supersample = 1;
-    settings.resources.voxelResolution = 32;
-    settings.resources.sunShadowMapSize = 256;
-    settings.resources.localShadowMapSize = 128;
-    settings.shading.mode = RenderMode::Direct;
-    return settings;
-}
+RenderSettings directSettings() { return smallRenderSettings(kSize, RenderMode::Direct); }
 
 Scene loadBuilt(GltfBuilder& gltf) {
     TempFolder folder;

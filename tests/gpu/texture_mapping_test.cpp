@@ -17,15 +17,8 @@ constexpr uint32_t kSize = 32;
 constexpr float kRelativeTolerance = 0.01f;
 
 RenderSettings smallSettings(RenderMode mode) {
-    RenderSettings settings;
-    settings.image.width = kSize;
-    settings.image.height = kSize;
-    settings.image.supersample = 1;
-    settings.resources.voxelResolution = 32;
+    RenderSettings settings = smallRenderSettings(kSize, mode);
     settings.resources.bounces = 1;
-    settings.resources.sunShadowMapSize = 256;
-    settings.resources.localShadowMapSize = 128;
-    settings.shading.mode = mode;
     return settings;
 }
 
