@@ -80,8 +80,11 @@ void drawLightsSection(ViewerState& state) {
         ImGui::PopID();
     }
     if (ImGui::TreeNodeEx("sky", state.environment != glm::vec3(0.0f) ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
-        // Radiance, not a display colour: HDR values, dragged in small steps.
-        ImGui::ColorEdit3("radiance", &state.environment.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+        // Radiance, not a display colour: HDR values, dragged in small steps. With an environment
+        // image it is the factor on the image's radiance.
+        if (!state.skyImage.empty()) ImGui::TextWrapped("image: %s", state.skyImage.c_str());
+        ImGui::ColorEdit3(state.skyImage.empty() ? "radiance" : "factor", &state.environment.x,
+                          ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
         state.environment = glm::max(state.environment, glm::vec3(0.0f));
         ImGui::TreePop();
     }

@@ -323,6 +323,7 @@ void Viewer::rememberSceneFile(const std::string& name) {
 void Viewer::showScene() {
     state_.lights = scene_.lights;
     state_.environment = scene_.environment;
+    state_.skyImage = scene_.environmentMap ? scene_.environmentMap->name : std::string();
     state_.materials = scene_.materials;
     state_.sceneSize = std::max(glm::length(scene_.bounds().extent()), 1e-3f);
     const Light& sun = scene_.lights.at(state_.sunIndex);

@@ -41,6 +41,7 @@ struct ViewerState {
     std::vector<Light> lights;
     size_t sunIndex = 0;
     glm::vec3 environment{0.0f};      // the sky's radiance, as the scene panel edits it
+    std::string skyImage;             // the environment image's file (then `environment` scales it), or empty
     std::vector<Material> materials;  // shown, not edited
     float sceneSize = 1.0f;           // the bounds' diagonal, for drag speeds
     bool showGuide = false;           // F1 opens it; the status bar says so
