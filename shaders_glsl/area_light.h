@@ -21,41 +21,42 @@ SHARED_FN float edgeIntegral(vec3 a, vec3 b, vec3 n) {
     return s > 1e-12f ? atan(s, dot(ua, ub)) / s * dot(c, n) : 0.0f;
 }
 
-// Where the edge a → b crosses the horizon plane (only meaningful when it does).
-SHARED_FN vec3 horizonCrossing(vec3 a, vec3 b, vec3 n) {
-    float da = dot(a, n);
-    float db = dot(b, n);
-    return a + (b - a) * (da / (da - db));
+// Where the edge a → b, whose ends lie at heights da and db over the horizon plane, crosses it
+// (only meaningful when it does; a finite point when it does not).
+SHARED_FN vec3 horizonCrossing(vec3 a, vec3 b, float da, float db) {
+    float gap = da - db;
+    return a + (b - a) * (da / (gap != 0.0f ? gap : 1.0f));
 }
 
-// The edge a → b clipped to the half-space n·v ≥ 0 (where the point can see).
-SHARED_FN float clippedEdgeIntegral(vec3 a, vec3 b, vec3 n) {
-    float da = dot(a, n);
-    float db = dot(b, n);
-    if (da >= 0.0f && db >= 0.0f) return edgeIntegral(a, b, n);
-    if (da < 0.0f && db < 0.0f) return 0.0f;
-    vec3 crossing = horizonCrossing(a, b, n);
-    return da >= 0.0f ? edgeIntegral(a, crossing, n) : edgeIntegral(crossing, b, n);
+// The part of the edge a → b on the side n·v ≥ 0 (where the point can see), `crossing` where the
+// edge crosses the horizon: one edge integral between the visible part's ends, whichever way the
+// edge is cut. (A GPU that runs both sides of every branch, as lavapipe does, pays for each
+// edgeIntegral written: this way four a triangle, not ten.)
+SHARED_FN float clippedEdgeIntegral(vec3 a, vec3 b, float da, float db, vec3 crossing, vec3 n) {
+    vec3 from = da >= 0.0f ? a : crossing;
+    vec3 to = db >= 0.0f ? b : crossing;
+    return da >= 0.0f || db >= 0.0f ? edgeIntegral(from, to, n) : 0.0f;
 }
 
 // Irradiance per unit radiance at a point with unit normal n from the triangle v0 v1 v2 (corners
 // relative to the point, either winding): the projected solid angle of its visible part, 0..π.
 SHARED_FN float triangleIrradiance(vec3 v0, vec3 v1, vec3 v2, vec3 n) {
-    float sum = clippedEdgeIntegral(v0, v1, n) + clippedEdgeIntegral(v1, v2, n) + clippedEdgeIntegral(v2, v0, n);
-    // A triangle cut by the horizon leaves it on one edge and comes back on another: close the
-    // boundary along the horizon from the leaving point to the returning one.
     float d0 = dot(v0, n);
     float d1 = dot(v1, n);
     float d2 = dot(v2, n);
+    vec3 c01 = horizonCrossing(v0, v1, d0, d1);
+    vec3 c12 = horizonCrossing(v1, v2, d1, d2);
+    vec3 c20 = horizonCrossing(v2, v0, d2, d0);
+    float sum = clippedEdgeIntegral(v0, v1, d0, d1, c01, n) + clippedEdgeIntegral(v1, v2, d1, d2, c12, n) +
+                clippedEdgeIntegral(v2, v0, d2, d0, c20, n);
+    // A triangle cut by the horizon leaves it on one edge and comes back on another: close the
+    // boundary along the horizon from the leaving point to the returning one.
     bool leaves01 = d0 >= 0.0f && d1 < 0.0f, leaves12 = d1 >= 0.0f && d2 < 0.0f, leaves20 = d2 >= 0.0f && d0 < 0.0f;
     bool enters01 = d0 < 0.0f && d1 >= 0.0f, enters12 = d1 < 0.0f && d2 >= 0.0f, enters20 = d2 < 0.0f && d0 >= 0.0f;
-    if ((leaves01 || leaves12 || leaves20) && (enters01 || enters12 || enters20)) {
-        vec3 leaving = leaves01 ? horizonCrossing(v0, v1, n)
-                                : (leaves12 ? horizonCrossing(v1, v2, n) : horizonCrossing(v2, v0, n));
-        vec3 entering = enters01 ? horizonCrossing(v0, v1, n)
-                                 : (enters12 ? horizonCrossing(v1, v2, n) : horizonCrossing(v2, v0, n));
+    vec3 leaving = leaves01 ? c01 : (leaves12 ? c12 : c20);
+    vec3 entering = enters01 ? c01 : (enters12 ? c12 : c20);
+    if ((leaves01 || leaves12 || leaves20) && (enters01 || enters12 || enters20))
         sum += edgeIntegral(leaving, entering, n);
-    }
     return 0.5f * abs(sum);
 }
 

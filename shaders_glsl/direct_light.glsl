@@ -45,7 +45,7 @@ vec3 areaLightReflected(GpuLight light, SurfacePoint surface, uint flags) {
     if (dot(irradiance, irradiance) <= 0.0f) return vec3(0.0f);
     vec3 toCentre = light.positionRange.xyz - surface.position;
     float distanceToLight = length(toCentre);
-    float visibility = shadowVisibility(light, surface.position, surface.normal, distanceToLight, true);
+    float visibility = areaLightVisibility(light, surface.position, surface.normal, distanceToLight, true);
     if (visibility <= 0.0f) return vec3(0.0f);
     vec3 radiance = vec3(0.0f);
     if ((flags & SHOW_DIRECT_DIFFUSE) != 0u) {
@@ -61,17 +61,18 @@ vec3 areaLightReflected(GpuLight light, SurfacePoint surface, uint flags) {
     return radiance * visibility;
 }
 
-// Reflected radiance towards the viewer from all lights, split by the SHOW_DIRECT_* flags.
+// Reflected radiance towards the viewer from all lights, split by the SHOW_DIRECT_* flags. The
+// punctual lights and the area lights (lights[frame.firstAreaLight..]) have loops of their own:
+// lavapipe runs every branch of a loop's body for every light, so one loop ran each light through
+// both kinds' code.
 vec3 directLight(SurfacePoint surface, uint flags) {
     vec3 radiance = vec3(0.0f);
     float NdotV = max(dot(surface.normal, surface.toViewer), 1e-4f);
-    for (uint i = 0u; i < frame.lightCount; ++i) {
+    if (AREA_LIGHTS_COMPILED && (flags & USE_AREA_LIGHTS) != 0u)
+        for (uint i = frame.firstAreaLight; i < frame.lightCount; ++i)
+            radiance += areaLightReflected(lights[i], surface, flags);
+    for (uint i = 0u; i < frame.firstAreaLight; ++i) {
         GpuLight light = lights[i];
-        if (uint(light.radiantIntensity.w) == LIGHT_AREA) {
-            if (AREA_LIGHTS_COMPILED && (flags & USE_AREA_LIGHTS) != 0u)
-                radiance += areaLightReflected(light, surface, flags);
-            continue;
-        }
         vec3 toLight;
         float distanceToLight;
         vec3 irradiance = incidentLight(light, surface.position, toLight, distanceToLight);

@@ -107,7 +107,7 @@ struct FrameConstants {
     uint skipEmptySpace;  // 1 = march through empty space with the coarse mips
     uint debugVoxelMip;   // the mip level the voxel debug views show
     uint diffuseDownscale;  // diffuse cones traced once per diffuseDownscale² samples (1 = every sample)
-    uint unused1;
+    uint firstAreaLight;  // lights[firstAreaLight, lightCount) are the area lights, after the punctual ones
     vec4 environment;  // rgb: the sky's radiance (Scene::environment), seen by cones that leave the grid;
                        // w = 1: an environment image is bound, and rgb multiplies it (sky.glsl)
 };

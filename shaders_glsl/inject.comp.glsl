@@ -40,7 +40,7 @@ vec3 areaLightOnVoxel(GpuLight light, vec3 center, vec3 normalSum, float normalL
     vec3 lookup = center + normal * (0.5f * voxelSize);
     vec3 irradiance = areaLightIrradiance(light, lookup, normal) * (sided ? 1.0f : 0.5f);
     if (dot(irradiance, irradiance) <= 0.0f) return vec3(0.0f);
-    return irradiance * shadowVisibility(light, lookup, normal, distance(light.positionRange.xyz, lookup), false);
+    return irradiance * areaLightVisibility(light, lookup, normal, distance(light.positionRange.xyz, lookup), false);
 }
 
 void injectVoxel(ivec3 voxel) {
@@ -52,12 +52,12 @@ void injectVoxel(ivec3 voxel) {
 
     bool areaLights = (frame.componentFlags & USE_AREA_LIGHTS) != 0u;
     vec3 irradiance = vec3(0.0f);
-    for (uint i = 0u; i < frame.lightCount; ++i) {
+    // Area lights and punctual ones in loops of their own (as in direct_light.glsl's directLight).
+    if (areaLights)
+        for (uint i = frame.firstAreaLight; i < frame.lightCount; ++i)
+            irradiance += areaLightOnVoxel(lights[i], center, normalSum, normalLength, voxelSize);
+    for (uint i = 0u; i < frame.firstAreaLight; ++i) {
         GpuLight light = lights[i];
-        if (uint(light.radiantIntensity.w) == LIGHT_AREA) {
-            if (areaLights) irradiance += areaLightOnVoxel(light, center, normalSum, normalLength, voxelSize);
-            continue;
-        }
         vec3 toLight;
         float distanceToLight;
         vec3 incident = incidentLight(light, center, toLight, distanceToLight);

@@ -176,6 +176,7 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
     constants.cameraPosition = local.position;
     constants.lightCount = uint32_t(shadowLayout_.lights.size());
+    constants.firstAreaLight = shadowLayout_.firstAreaLight;
     constants.shadowViewCount = uint32_t(shadowLayout_.views.size());
     const ShadingSettings& shading = settings_.shading;
     constants.componentFlags = componentFlags(effectiveComponents(shading));

@@ -87,6 +87,7 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
         }
         layout.lights.push_back(gpu);
     }
+    layout.firstAreaLight = uint32_t(layout.lights.size());
     for (const AreaLight& light : areaLights) {
         glsl::GpuLight gpu{};
         gpu.radiantIntensity = glm::vec4(light.meanRadiance, float(glsl::LIGHT_AREA));

@@ -19,7 +19,8 @@ namespace vct {
 // lights first, then the area lights, whose triangles follow in one array.
 struct ShadowLayout {
     std::vector<glsl::ShadowView> views;
-    std::vector<glsl::GpuLight> lights;
+    std::vector<glsl::GpuLight> lights;  // the punctual lights, then from firstAreaLight on the area lights
+    uint32_t firstAreaLight = 0;
     std::vector<glsl::GpuEmitterTriangle> emitterTriangles;
     uint32_t sunLayers = 0;
     uint32_t localLayers = 0;
