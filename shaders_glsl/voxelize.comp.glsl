@@ -6,9 +6,11 @@
 // footprint (textureOverVoxel), so the light the voxels bounce has the colour of the surface there,
 // not of a white baseColorFactor. A material emits into the voxels where its voxelEmission (the
 // emissive texture's mean) is above zero.
-// Opacity is the largest voxel coverage (voxelEmission.w: alpha as a mean over the texture) of the
-// touching triangles; a triangle of coverage 0 (a fully transparent material) adds nothing.
+// Opacity is the largest voxel coverage of the touching triangles (voxelEmission.w, a mean over the
+// texture; for BLEND the alpha over the voxel's footprint); where a triangle's coverage is 0 it
+// adds nothing.
 #extension GL_GOOGLE_include_directive : require
+#include "alpha_coverage.h"
 #include "gpu_types.h"
 #include "voxelize.h"
 #include "texture_transform.h"
@@ -97,9 +99,16 @@ void main() {
                                     cornerTexCoords(triangle, 2u));
         vec3 weights = weightsNear(a, b, c, vec3(voxel) + 0.5f);
         float voxelArea = length(cross(b - a, c - a));
-        if (material.baseColorTexture >= 0)
-            albedo *= textureOverVoxel(material.baseColorTexture, material.baseColorTransform, texCoords, weights,
-                                       voxelArea).rgb;
+        if (material.baseColorTexture >= 0) {
+            vec4 baseColor = textureOverVoxel(material.baseColorTexture, material.baseColorTransform, texCoords,
+                                              weights, voxelArea);
+            albedo *= baseColor.rgb;
+            // BLEND: as opaque as the mean alpha over the voxel's footprint, not over the whole texture
+            // (an atlas's other parts counted there). MASK keeps the material's share of texels at
+            // or above the cutoff: a filtered alpha says nothing of that share.
+            if (material.alphaMode == ALPHA_BLEND)
+                coverage = clamp(material.baseColorFactor.a * baseColor.a, 0.0f, 1.0f);
+        }
         if (emits && material.emissiveTexture >= 0)
             emission *= textureOverVoxel(material.emissiveTexture, material.emissiveTransform, texCoords, weights,
                                          voxelArea).rgb;
@@ -107,7 +116,8 @@ void main() {
     // Only after the texture reads may the invocations of a workgroup part: lavapipe takes an explicit
     // level of detail from one invocation of a SIMD group, which must have computed it (voxels read
     // the wrong level where a neighbour had left early).
-    if (any(greaterThanEqual(voxel, uvec3(resolution))) || !triangleTouchesBox(a, b, c, vec3(voxel) + 0.5f, 0.5f))
+    if (any(greaterThanEqual(voxel, uvec3(resolution))) || !triangleTouchesBox(a, b, c, vec3(voxel) + 0.5f, 0.5f) ||
+        !(coverage > 0.0f))
         return;
     albedo = clamp(albedo, 0.0f, 1.0f);
     emission = clamp(emission * params.emission.x, 0.0f, EMISSION_FIXED_MAX);

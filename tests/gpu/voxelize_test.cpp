@@ -683,6 +683,36 @@ TEST_F(Voxelize, TexturesGiveEachVoxelTheColourOfTheSurfaceThere) {
         }
 }
 
+TEST_F(Voxelize, ABlendSurfaceIsAsOpaqueAsItsAlphaWhereItIs) {
+    // BLEND through a texture opaque in its left half and clear in its right (factor alpha 1): the
+    // voxels take the alpha of their own footprint, 1 on the left and none on the right, where the
+    // texture's mean, 1/2, would make every voxel half opaque (an atlas's other parts counted).
+    Scene scene;
+    scene.name = "half-clear BLEND";
+    Texture halfClear;
+    halfClear.width = 8;
+    halfClear.height = 1;
+    for (uint32_t x = 0; x < 8; ++x)
+        halfClear.rgba8.insert(halfClear.rgba8.end(), {255, 255, 255, uint8_t(x < 4 ? 255 : 0)});
+    scene.textures.push_back(halfClear);
+    Material blend;
+    blend.alphaMode = AlphaMode::Blend;
+    blend.baseColorTexture.index = 0;
+    scene.materials = {blend};
+    addTexturedRectangle(scene, 3.5f, 0);
+    EXPECT_EQ(voxelCoverage(scene, scene.materials[0]), 0.5f);
+    const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(16));
+    for (uint32_t y = 2; y <= 5; ++y)
+        for (uint32_t x = 2; x <= 9; ++x) {
+            const float opacity = gpu.albedoOpacity[x + 16 * (y + 16 * 3)].a;
+            if (x < 5) {
+                EXPECT_EQ(opacity, 1.0f) << "voxel column " << x << ", row " << y;
+            } else if (x > 6) {
+                EXPECT_EQ(opacity, 0.0f) << "voxel column " << x << ", row " << y;
+            }
+        }
+}
+
 // A rectangle of two triangles in the plane z = `z` (a voxel centre plane: it touches that layer
 // of voxels only) over voxels x, y ∈ [2, 5], its edges and diagonal clear of the voxels' corners.
 std::vector<TriangleF> squareAt(float z) {
