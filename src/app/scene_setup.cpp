@@ -23,9 +23,7 @@ SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
         overrides.lightIntensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
     const std::string environment = arguments.text("environment", "");
     if (namesEnvironmentImage(environment)) {
-        std::error_code error;
-        if (!std::filesystem::is_regular_file(environment, error))
-            throw Error(environment + ": environment image not found");
+        checkEnvironmentImageExists(environment);
         overrides.environmentImage = environment;
     } else {
         overrides.environment = arguments.vector3("environment");

@@ -10,6 +10,7 @@
 
 #include "equirectangular.h"  // shaders_glsl: where a direction reads the image
 #include "error.h"
+#include "scene/material_textures.h"
 #include "scene/scene.h"
 
 namespace vct {
@@ -19,9 +20,13 @@ glm::vec3 EnvironmentMap::texel(uint32_t x, uint32_t y) const {
     return glm::vec3(t[0], t[1], t[2]);
 }
 
-EnvironmentMap loadEnvironmentMap(const std::string& path) {
+void checkEnvironmentImageExists(const std::string& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": environment image not found");
+}
+
+EnvironmentMap loadEnvironmentMap(const std::string& path) {
+    checkEnvironmentImageExists(path);
     int width = 0, height = 0, channels = 0;
     if (!stbi_info(path.c_str(), &width, &height, &channels))
         throw Error(path + ": not an image stb_image can read (" + stbi_failure_reason() + ")");
@@ -65,12 +70,11 @@ glm::vec3 environmentRadiance(const EnvironmentMap& map, const glm::vec3& direct
     // Texel centres sit at (i + ½)/size, as a GPU sampler places them.
     const glm::vec2 at = glsl::equirectangularCoordinates(direction) * glm::vec2(map.width, map.height) - 0.5f;
     const glm::vec2 low = glm::floor(at), t = at - low;
-    auto column = [&](float x) {
-        const int64_t n = map.width, i = int64_t(x);
-        return uint32_t(((i % n) + n) % n);
-    };
-    auto row = [&](float y) { return uint32_t(std::clamp(int64_t(y), int64_t(0), int64_t(map.height) - 1)); };
-    const uint32_t x0 = column(low.x), x1 = column(low.x + 1.0f), y0 = row(low.y), y1 = row(low.y + 1.0f);
+    // Around the horizon the image wraps; at the poles it ends (as the renderer's sampler).
+    const uint32_t x0 = wrapTexel(low.x, map.width, TextureWrap::Repeat);
+    const uint32_t x1 = wrapTexel(low.x + 1.0, map.width, TextureWrap::Repeat);
+    const uint32_t y0 = wrapTexel(low.y, map.height, TextureWrap::ClampToEdge);
+    const uint32_t y1 = wrapTexel(low.y + 1.0, map.height, TextureWrap::ClampToEdge);
     return glm::mix(glm::mix(map.texel(x0, y0), map.texel(x1, y0), t.x),
                     glm::mix(map.texel(x0, y1), map.texel(x1, y1), t.x), t.y);
 }

@@ -25,6 +25,9 @@ struct EnvironmentMap {
 // The most texels an environment image may have (16384 × 8192: 2 GiB as float RGBA).
 constexpr uint64_t kMaxEnvironmentTexels = uint64_t(16384) * 8192;
 
+// A vct::Error naming `path` unless it is a file (checked before any work, read later).
+void checkEnvironmentImageExists(const std::string& path);
+
 // Reads a Radiance .hdr file. A missing, unreadable or non-HDR file, one larger than
 // kMaxEnvironmentTexels, or a texel that is negative or not finite is a vct::Error naming the file.
 EnvironmentMap loadEnvironmentMap(const std::string& path);
