@@ -188,8 +188,7 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     // sampled per voxel, is at most 1).
     float largestEmission = 0.0f;
     for (const Material& material : scene.materials) {
-        const glm::vec3 mean = voxelEmission(scene, material);
-        if (std::max({mean.x, mean.y, mean.z}) > 0.0f)
+        if (emitsLight(scene, material))
             largestEmission =
                 std::max({largestEmission, material.emission.x, material.emission.y, material.emission.z});
     }

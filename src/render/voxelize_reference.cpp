@@ -91,10 +91,9 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
         if (!(coverage > 0.0)) continue;
         const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
         const glm::dvec3 albedo = glm::clamp(glm::dvec3(glm::vec3(material.baseColorFactor)), 0.0, 1.0);
-        // A material emits where its emissive texture's mean is not black (voxelEmission), with its factor.
-        const glm::vec3 mean = voxelEmission(scene, material);
-        const bool emits = std::max({mean.x, mean.y, mean.z}) > 0.0f;
-        const glm::dvec3 emission = emits ? glm::max(glm::dvec3(material.emission), 0.0) : glm::dvec3(0.0);
+        // A material emits where its emissive texture's mean is not black, with its factor.
+        const glm::dvec3 emission =
+            emitsLight(scene, material) ? glm::max(glm::dvec3(material.emission), 0.0) : glm::dvec3(0.0);
         // One voxel of slack so voxels just outside the range also get their decision margin.
         const VoxelRange range = triangleVoxelRange(triangle, n, 1.0);
         for (int z = range.first.z; z <= range.last.z; ++z)

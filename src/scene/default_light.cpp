@@ -18,10 +18,7 @@ bool sceneHasLight(const Scene& scene) {
     if (!scene.lights.empty()) return true;
     if (scene.environment.r > 0.0f || scene.environment.g > 0.0f || scene.environment.b > 0.0f) return true;
     std::vector<char> emits;
-    for (const Material& material : scene.materials) {
-        const glm::vec3 emission = voxelEmission(scene, material);
-        emits.push_back(emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f);
-    }
+    for (const Material& material : scene.materials) emits.push_back(emitsLight(scene, material));
     for (uint32_t material : scene.triangleMaterials)
         if (material < emits.size() && emits[material]) return true;
     return false;

@@ -88,6 +88,11 @@ glm::vec3 voxelEmission(const Scene& scene, const Material& material) {
     return material.emission * meanLinearColor(scene.textures[size_t(texture)]);
 }
 
+bool emitsLight(const Scene& scene, const Material& material) {
+    const glm::vec3 emission = voxelEmission(scene, material);
+    return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f;
+}
+
 float voxelCoverage(const Scene& scene, const Material& material) {
     if (material.alphaMode == AlphaMode::Opaque) return 1.0f;
     const float factor = material.baseColorFactor.a;

@@ -34,6 +34,8 @@ glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv
 // texture. An approximation: the voxels of a surface whose texture glows in a few places glow
 // evenly and faintly, with the same total power (for a texture mapped once over the surface).
 glm::vec3 voxelEmission(const Scene& scene, const Material& material);
+// Whether the material emits at all: its voxelEmission is not black.
+bool emitsLight(const Scene& scene, const Material& material);
 
 // The share of the material's surface the voxelizer sees, in [0, 1]: its coverage (base colour
 // alpha, factor × texture) as a mean over the texture, the way voxelEmission treats emission.
