@@ -10,20 +10,22 @@
 namespace vct {
 namespace {
 
-// One level of the chain: float RGBA, rows from the top.
+// One level of the chain: float RGBA, rows from the top; level 0 is the map's own texels.
 struct Level {
     uint32_t width, height;
-    std::vector<float> rgba;
+    const float* rgba;
+    size_t values() const { return size_t(width) * height * 4; }
 };
 
 // Each level the box-filtered half of the one above (an odd last row or column counted once more):
-// the mean radiance of the directions each texel covers, as the cones want it. Down to 1 × 1.
-std::vector<Level> mipChain(const EnvironmentMap& map) {
-    std::vector<Level> levels{{map.width, map.height, map.rgba}};
+// the mean radiance of the directions each texel covers, as the cones want it. Down to 1 × 1. The
+// levels past 0 are held in `storage`.
+std::vector<Level> mipChain(const EnvironmentMap& map, std::vector<std::vector<float>>& storage) {
+    std::vector<Level> levels{{map.width, map.height, map.rgba.data()}};
     while (levels.back().width > 1 || levels.back().height > 1) {
-        const Level& above = levels.back();
-        Level level{std::max(above.width / 2, 1u), std::max(above.height / 2, 1u), {}};
-        level.rgba.resize(size_t(level.width) * level.height * 4);
+        const Level above = levels.back();
+        Level level{std::max(above.width / 2, 1u), std::max(above.height / 2, 1u), nullptr};
+        std::vector<float>& rgba = storage.emplace_back(level.values());
         for (uint32_t y = 0; y < level.height; ++y)
             for (uint32_t x = 0; x < level.width; ++x)
                 for (uint32_t c = 0; c < 4; ++c) {
@@ -34,9 +36,10 @@ std::vector<Level> mipChain(const EnvironmentMap& map) {
                             const uint32_t sy = std::min(2 * y + dy, above.height - 1);
                             sum += above.rgba[4 * (size_t(sy) * above.width + sx) + c];
                         }
-                    level.rgba[4 * (size_t(y) * level.width + x) + c] = 0.25f * sum;
+                    rgba[4 * (size_t(y) * level.width + x) + c] = 0.25f * sum;
                 }
-        levels.push_back(std::move(level));
+        level.rgba = rgba.data();
+        levels.push_back(level);
     }
     return levels;
 }
@@ -53,7 +56,8 @@ SkyImage::SkyImage(GpuContext& context, const EnvironmentMap* map) : mapped_(map
     EnvironmentMap placeholder;
     placeholder.width = placeholder.height = 1;
     placeholder.rgba = {1.0f, 1.0f, 1.0f, 1.0f};
-    const std::vector<Level> levels = mipChain(mapped_ ? *map : placeholder);
+    std::vector<std::vector<float>> storage;
+    const std::vector<Level> levels = mipChain(mapped_ ? *map : placeholder, storage);
     // 32-bit floats keep a sun's radiance whole; a device that cannot filter them gets half
     // floats (filtering them is required), which hold up to 65504.
     const bool full = filtersLinearly(context, VK_FORMAT_R32G32B32A32_SFLOAT);
@@ -67,7 +71,7 @@ SkyImage::SkyImage(GpuContext& context, const EnvironmentMap* map) : mapped_(map
 
     const size_t texelBytes = full ? 16 : 8;
     VkDeviceSize total = 0;
-    for (const Level& level : levels) total += VkDeviceSize(level.rgba.size() / 4) * texelBytes;
+    for (const Level& level : levels) total += VkDeviceSize(level.values() / 4) * texelBytes;
     Buffer staging(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
     std::vector<VkBufferImageCopy> regions;
     VkDeviceSize offset = 0;
@@ -75,9 +79,9 @@ SkyImage::SkyImage(GpuContext& context, const EnvironmentMap* map) : mapped_(map
         const Level& level = levels[i];
         auto* bytes = static_cast<uint8_t*>(staging.mapped) + offset;
         if (full) {
-            std::memcpy(bytes, level.rgba.data(), level.rgba.size() * sizeof(float));
+            std::memcpy(bytes, level.rgba, level.values() * sizeof(float));
         } else {
-            for (size_t t = 0; t < level.rgba.size(); ++t) {
+            for (size_t t = 0; t < level.values(); ++t) {
                 const uint16_t half = glm::packHalf1x16(std::min(level.rgba[t], 65504.0f));
                 std::memcpy(bytes + 2 * t, &half, 2);
             }
@@ -87,7 +91,7 @@ SkyImage::SkyImage(GpuContext& context, const EnvironmentMap* map) : mapped_(map
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, i, 0, 1};
         region.imageExtent = {level.width, level.height, 1};
         regions.push_back(region);
-        offset += VkDeviceSize(level.rgba.size() / 4) * texelBytes;
+        offset += VkDeviceSize(level.values() / 4) * texelBytes;
     }
     submitAndWait(context, [&](VkCommandBuffer commands) {
         imageBarrier(commands, image_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
