@@ -39,6 +39,15 @@ Scene planeUnderTheSky(const Material& material) {
     return scene;
 }
 
+// Albedo 0.5, no specular reflection.
+Material greyLambertian() {
+    Material grey;
+    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    grey.metallic = 0.0f;
+    grey.specularWeight = 0.0f;
+    return grey;
+}
+
 RenderSettings smallSettings(RenderMode mode) {
     RenderSettings settings;
     settings.image.width = settings.image.height = 32;
@@ -67,10 +76,7 @@ TEST_F(Environment, TheSkyIsSeenDirectlyAndLightsAnOpenPlaneIndirectly) {
     // 0.5·L, all of it indirect (gathered by cones that leave the grid having met nothing); the
     // pixels past its edge see L, as direct light. The path tracer's test of the same scene holds it
     // to 1e-4; the cones to 2 %, what their start above the plane's own voxels may cost.
-    Material grey;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    grey.metallic = 0.0f;
-    grey.specularWeight = 0.0f;
+    const Material grey = greyLambertian();
     const Scene scene = planeUnderTheSky(grey);
     for (RenderMode mode : {RenderMode::Full, RenderMode::Direct, RenderMode::Indirect}) {
         Renderer renderer(gpu(), scene, smallSettings(mode));
@@ -132,10 +138,7 @@ TEST_F(Environment, UnderASlabTheGroundSeesTheSlabNotTheSkyThroughIt) {
     // its one-sided voxels, empty seen from behind, let them through to the sky. The ground under
     // it sees the slab's black underside nearly everywhere. Seen from a camera in the gap, looking
     // along it.
-    Material grey;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    grey.metallic = 0.0f;
-    grey.specularWeight = 0.0f;
+    const Material grey = greyLambertian();
     Scene scene = planeUnderTheSky(grey);
     Material black = grey;
     black.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
@@ -166,10 +169,7 @@ TEST_F(Environment, UnderASlabTheGroundSeesTheSlabNotTheSkyThroughIt) {
 TEST_F(Environment, AnImageOfOneRadianceLightsThePlaneAsThatUniformSkyDoes) {
     // The same plane under a 32 × 16 image holding kSky in every texel: the cones read it through
     // its mip chain, so plane and sky must come out as under the uniform sky (the test above).
-    Material grey;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    grey.metallic = 0.0f;
-    grey.specularWeight = 0.0f;
+    const Material grey = greyLambertian();
     Scene scene = planeUnderTheSky(grey);
     scene.environment = glm::vec3(2.0f);  // the factor on the image
     scene.environmentMap = makeEnvironmentMap(32, 16, [](uint32_t, uint32_t) { return 0.5f * kSky; });
