@@ -45,7 +45,7 @@ void gatherVoxel(ivec3 voxel) {
 
 void main() {
     uint count = (occupied.count + sliceCount - 1u - slicePhase) / sliceCount;  // list items in the slice
-    // The dispatch covers the whole list and may be capped: each invocation strides over the slice.
+    // The dispatch covers the slice and may be capped: each invocation strides over what it leaves.
     uint stride = gl_NumWorkGroups.x * WORK_LIST_GROUP_SIZE;
     for (uint i = gl_GlobalInvocationID.x; i < count; i += stride)
         gatherVoxel(ivec3(unpackCell(occupiedVoxels[i * sliceCount + slicePhase])));

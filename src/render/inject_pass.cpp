@@ -45,7 +45,14 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
 }
 
 void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
-                              const SkyImage& sky, Slice slice) {
+                              const SkyImage& sky, Slice slice, uint32_t occupiedVoxels) {
+    // Sized on the host, not by the list's indirect dispatch: lavapipe runs each workgroup through
+    // the whole shader, every loop once, even where no invocation has an item, and a 1/20 slice
+    // dispatched over the whole list cost twice its own gather.
+    const uint32_t items = (occupiedVoxels + slice.count - 1 - slice.phase) / slice.count;
+    const uint32_t groups = std::min((items + glsl::WORK_LIST_GROUP_SIZE - 1) / glsl::WORK_LIST_GROUP_SIZE,
+                                     context_.properties.limits.maxComputeWorkGroupCount[0]);
+    if (groups == 0) return;
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.pipeline);
     const VkSampler sampler = volumes.sampler.sampler;
     DescriptorPush()
@@ -60,8 +67,7 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.layout);
     vkCmdPushConstants(commands, gatherPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);
-    // The slice is a fraction of the list: the invocations past it return at once.
-    vkCmdDispatchIndirect(commands, volumes.occupiedDispatch.buffer, 0);
+    vkCmdDispatch(commands, groups, 1, 1);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }

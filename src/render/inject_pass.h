@@ -22,11 +22,12 @@ struct InjectPass {
 
     // Every sliceCount-th occupied voxel from slicePhase gathers the light of the current
     // (mipmapped) volume through its diffuse cones into volumes.gatheredLight; {1, 0} is all.
+    // occupiedVoxels is the voxelizer's count, read back: the dispatch covers the slice alone.
     struct Slice {
         uint32_t count = 1, phase = 0;
     };
     void recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
-                      const SkyImage& sky, Slice slice);
+                      const SkyImage& sky, Slice slice, uint32_t occupiedVoxels);
 
     Pipeline pipeline;
     Pipeline gatherPipeline;

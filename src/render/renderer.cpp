@@ -265,7 +265,9 @@ FrameStats Renderer::renderFrame() {
             // dropping to one bounce. Otherwise every frame that re-lights starts from the light
             // sources alone: the same inputs, the same image.
             run(commands, Pass::Inject, [&] {
-                if (progressive) injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, slice);
+                if (progressive)
+                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, slice,
+                                             occupiedVoxels_);
                 injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_,
                                    progressive);
             });
@@ -293,7 +295,7 @@ FrameStats Renderer::renderFrame() {
         for (uint32_t i = 0; i < more && !(converging && converged); ++i) {
             submit([&](VkCommandBuffer commands) {
                 run(commands, Pass::Bounce, [&] {
-                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {});
+                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {}, occupiedVoxels_);
                     injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
                     mipsPass_.record(commands, *volumes_);
                     if (converging) recordMeanRadiance(commands);
