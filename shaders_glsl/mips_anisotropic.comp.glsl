@@ -1,9 +1,9 @@
 #version 460
-// One level of one directional mip chain (Crassin et al. 2011, section 4.1, "anisotropic
-// voxels"). For rays travelling along +x, say, each pair of children along x is composited front
-// to back (the nearer child occludes the farther one), and the four pairs are averaged. A wall
-// across a texel then stays opaque for rays crossing it, where a plain average would make it
-// 1/size opaque and let wide cones see through thin walls.
+// One level of the two directional mip chains along one axis (Crassin et al. 2011, section 4.1,
+// "anisotropic voxels"). For rays travelling along +x, say, each pair of children along x is
+// composited front to back (the nearer child occludes the farther one), and the four pairs are
+// averaged. A wall across a texel then stays opaque for rays crossing it, where a plain average
+// would make it 1/size opaque and let wide cones see through thin walls.
 //
 // The first level (built from the grid's level 0) is one-sided: a surface voxel is opaque, and
 // shows its light, only to rays that meet its front. Seen from behind or edge on it is empty, so a
@@ -11,14 +11,26 @@
 // their light (self-illumination), and a lone lit plane gets no indirect light from itself.
 // Voxels whose triangles disagree (the two faces of a thin wall, small features) have a short mean
 // normal and stay opaque both ways.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(set = 0, binding = 0, rgba16f) uniform readonly image3D finer;
-layout(set = 0, binding = 1, rgba16f) uniform writeonly image3D coarser;
-// The scene voxels' mean normals (not renormalized), read when `finer` is the grid's level 0.
-layout(set = 0, binding = 2, rgba16f) uniform readonly image3D sceneNormal;
+//
+// Each invocation walks one line of texels along the axis and writes both directions: the eight
+// children of a texel are read once for the two, and the texel before it along the ray, whose
+// composite an opaque one carries forward (below), was the walk's last step. On lavapipe this is a
+// quarter of the reads of one invocation per texel and direction.
+#extension GL_GOOGLE_include_directive : require
+#include "work_list.h"
+
+layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
+layout(set = 0, binding = 0, rgba16f) uniform readonly image3D finerPositive;  // seen along +axis
+layout(set = 0, binding = 1, rgba16f) uniform readonly image3D finerNegative;  // seen along −axis
+layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D coarserPositive;
+layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D coarserNegative;
+// The scene voxels' mean normals (not renormalized), read when the finer level is the grid's level 0.
+layout(set = 0, binding = 4, rgba16f) uniform readonly image3D sceneNormal;
+// Whether the finer level is the grid's level 0 (both `finer` views are then that level): a
+// pipeline each, since lavapipe reads the normals under a branch that skips them anyway.
+layout(constant_id = 0) const bool FINER_IS_SCENE_LEVEL = false;
 layout(push_constant) uniform Push {
-    uint direction;  // 0..5 = +x, −x, +y, −y, +z, −z: the direction rays travel through this volume
-    uint finerIsSceneLevel;
+    uint axis;  // 0, 1, 2 = x, y, z
 };
 
 // A mean normal shorter than this (two faces of a thin wall cancel) has no side.
@@ -28,53 +40,73 @@ const float FRONT_FACING = -0.1f;
 // A texel this opaque hides what lies behind it.
 const float OPAQUE = 0.99f;
 
-vec4 seenAlong(ivec3 voxel, vec3 rayDirection) {
-    vec4 value = imageLoad(finer, voxel);
-    if (finerIsSceneLevel == 0u || value.a <= 0.0f) return value;
-    vec3 normal = imageLoad(sceneNormal, voxel).xyz;
-    float normalLength = length(normal);
-    if (normalLength < MIN_SIDED_NORMAL) return value;
-    return dot(normal, rayDirection) < -FRONT_FACING * normalLength ? value : vec4(0.0f);
+struct Seen {
+    vec4 positive, negative;  // a child as rays along +axis and −axis see it
+};
+
+Seen seenFromBothSides(ivec3 voxel) {
+    Seen seen = Seen(imageLoad(finerPositive, voxel), imageLoad(finerNegative, voxel));
+    if (FINER_IS_SCENE_LEVEL) {
+        vec3 normal = imageLoad(sceneNormal, voxel).xyz;
+        float normalLength = length(normal);
+        // Rays along +axis meet the front of a surface whose normal points along −axis.
+        bool sided = normalLength >= MIN_SIDED_NORMAL;
+        float facing = normal[axis];
+        if (sided && !(facing < -FRONT_FACING * normalLength)) seen.positive = vec4(0.0f);
+        if (sided && !(-facing < -FRONT_FACING * normalLength)) seen.negative = vec4(0.0f);
+    }
+    return seen;
 }
 
-// The texel's value for rays travelling along `along` (× sign): each pair of children along the
-// axis composited front to back, the four pairs averaged.
-vec4 composite(ivec3 texel, int axis, bool positive, ivec3 along, vec3 rayDirection) {
-    vec4 sum = vec4(0.0f);
+// The texel's values for rays along +axis and −axis: each pair of children along the axis
+// composited front to back (premultiplied "over"), the four pairs averaged.
+Seen composite(ivec3 texel, ivec3 along) {
+    Seen sum = Seen(vec4(0.0f), vec4(0.0f));
     for (int a = 0; a < 2; ++a) {
         for (int b = 0; b < 2; ++b) {
             ivec3 across = ivec3(0);
             across[(axis + 1) % 3] = a;
             across[(axis + 2) % 3] = b;
             ivec3 first = texel * 2 + across;
-            vec4 low = seenAlong(first, rayDirection);
-            vec4 high = seenAlong(first + along, rayDirection);
-            vec4 near = positive ? low : high;
-            vec4 far = positive ? high : low;
-            sum += near + (1.0f - near.a) * far;  // premultiplied front-to-back "over"
+            Seen low = seenFromBothSides(first);
+            Seen high = seenFromBothSides(first + along);
+            sum.positive += low.positive + (1.0f - low.positive.a) * high.positive;
+            sum.negative += high.negative + (1.0f - high.negative.a) * low.negative;
         }
     }
-    return sum * 0.25f;
+    sum.positive *= 0.25f;
+    sum.negative *= 0.25f;
+    return sum;
+}
+
+// What lies behind an opaque texel, seen along the ray, is unreachable: it is stored as opaque too.
+// Otherwise trilinear filtering blends a wall's texel with the empty one behind it, no sample of a
+// wide cone sees the wall's full opacity, and a cone that reaches a wall goes on through it (a
+// closed emitting box gave 0.68-0.84 of its radiance, by step size).
+vec4 behindOpaque(vec4 value, vec4 front) {
+    return front.a >= OPAQUE ? value + (1.0f - value.a) * front : value;
 }
 
 void main() {
-    ivec3 texel = ivec3(gl_GlobalInvocationID);
-    ivec3 size = imageSize(coarser);
-    if (any(greaterThanEqual(texel, size))) return;
-    int axis = int(direction / 2u);
-    bool positive = (direction & 1u) == 0u;
+    ivec3 size = imageSize(coarserPositive);
+    uint across1 = (axis + 1u) % 3u, across2 = (axis + 2u) % 3u;
+    uint line = gl_GlobalInvocationID.x;
+    if (line >= uint(size[across1] * size[across2])) return;
+    ivec3 texel = ivec3(0);
+    texel[across1] = int(line % uint(size[across1]));
+    texel[across2] = int(line / uint(size[across1]));
     ivec3 along = ivec3(0);
     along[axis] = 1;
-    vec3 rayDirection = vec3(along) * (positive ? 1.0f : -1.0f);
-    vec4 value = composite(texel, axis, positive, along, rayDirection);
-    // What lies behind an opaque texel, seen along the ray, is unreachable: it is stored as
-    // opaque too. Otherwise trilinear filtering blends a wall's texel with the empty one behind
-    // it, no sample of a wide cone sees the wall's full opacity, and a cone that reaches a wall
-    // goes on through it (a closed emitting box gave 0.68-0.84 of its radiance, by step size).
-    ivec3 before = texel - along * (positive ? 1 : -1);
-    if (all(greaterThanEqual(before, ivec3(0))) && all(lessThan(before, size))) {
-        vec4 front = composite(before, axis, positive, along, rayDirection);
-        if (front.a >= OPAQUE) value += (1.0f - value.a) * front;
+
+    // Rays along +axis meet texel i−1 before i; rays along −axis meet i+1 before i, so the −axis
+    // value of a texel is written one step later, once the next composite is known.
+    Seen last = composite(texel, along);
+    imageStore(coarserPositive, texel, last.positive);
+    for (int i = 1; i < size[axis]; ++i) {
+        Seen current = composite(texel + along * i, along);
+        imageStore(coarserPositive, texel + along * i, behindOpaque(current.positive, last.positive));
+        imageStore(coarserNegative, texel + along * (i - 1), behindOpaque(last.negative, current.negative));
+        last = current;
     }
-    imageStore(coarser, texel, value);
+    imageStore(coarserNegative, texel + along * (size[axis] - 1), last.negative);
 }

@@ -3,12 +3,14 @@
 #include <algorithm>
 
 #include "gpu/commands.h"
+#include "work_list.h"
 
 namespace vct {
 
 MipsPass::MipsPass(GpuContext& context)
     : pipeline(createComputePipeline(context, "mips.comp")),
-      directionalPipeline(createComputePipeline(context, "mips_anisotropic.comp")),
+      directionalFromScenePipeline(createComputePipeline(context, "mips_anisotropic.comp", {}, {1u})),
+      directionalPipeline(createComputePipeline(context, "mips_anisotropic.comp", {}, {0u})),
       context_(context) {}
 
 static VkImageView mipView(const GpuImage& image, uint32_t level) {
@@ -24,22 +26,27 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
     const GpuImage& volume = volumes.radiance;
     const std::vector<GpuImage>& directional = volumes.directional;
     if (directional.empty()) return;
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, directionalPipeline.pipeline);
     const uint32_t levels = directional[0].desc.mipLevels;
     for (uint32_t level = 0; level < levels; ++level) {
-        for (uint32_t direction = 0; direction < 6; ++direction) {
-            // The first directional level is built from the shared finest level.
-            const VkImageView source = level == 0 ? mipView(volume, 0) : mipView(directional[direction], level - 1);
+        const Pipeline& levelPipeline = level == 0 ? directionalFromScenePipeline : directionalPipeline;
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.pipeline);
+        const uint32_t size = std::max(directional[0].desc.extent.width >> level, 1u);
+        for (uint32_t axis = 0; axis < 3; ++axis) {
+            // Directions 2·axis and 2·axis + 1 travel along +axis and −axis; the first directional
+            // level is built from the shared finest level.
+            const GpuImage& positive = directional[2 * axis];
+            const GpuImage& negative = directional[2 * axis + 1];
             DescriptorPush()
-                .storageImage(0, source)
-                .storageImage(1, mipView(directional[direction], level))
-                .storageImage(2, volumes.normal.view)
-                .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, directionalPipeline.layout);
-            const uint32_t push[2] = {direction, level == 0 ? 1u : 0u};  // level 0 reads the scene voxels
-            vkCmdPushConstants(commands, directionalPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), push);
-            const uint32_t size = std::max(directional[direction].desc.extent.width >> level, 1u);
-            const uint32_t groups = (size + 3) / 4;
-            vkCmdDispatch(commands, groups, groups, groups);
+                .storageImage(0, level == 0 ? mipView(volume, 0) : mipView(positive, level - 1))
+                .storageImage(1, level == 0 ? mipView(volume, 0) : mipView(negative, level - 1))
+                .storageImage(2, mipView(positive, level))
+                .storageImage(3, mipView(negative, level))
+                .storageImage(4, volumes.normal.view)
+                .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.layout);
+            vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(axis), &axis);
+            // One invocation per line of texels along the axis.
+            const uint32_t lines = size * size;
+            vkCmdDispatch(commands, (lines + glsl::WORK_LIST_GROUP_SIZE - 1) / glsl::WORK_LIST_GROUP_SIZE, 1, 1);
         }
         memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,

@@ -18,7 +18,8 @@ struct MipsPass {
     void record(VkCommandBuffer commands, const VoxelVolumes& volumes);
 
     Pipeline pipeline;
-    Pipeline directionalPipeline;
+    Pipeline directionalFromScenePipeline;  // the directional chains' first level, one-sided
+    Pipeline directionalPipeline;           // their coarser levels
 
 private:
     void recordIsotropic(VkCommandBuffer commands, const GpuImage& volume);
