@@ -80,9 +80,13 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     const GpuImage& nowSamples = samples[frameCount_ % 2];
     const GpuImage& lastSamples = samples[(frameCount_ + 1) % 2];
     const uint32_t width = nowSamples.desc.extent.width, height = nowSamples.desc.extent.height;
-    // The G-buffer's last images are this pass's last frame's only if it ran on that frame.
-    if (gbuffer.recorded != lastGBufferFrame_ + 1) haveHistory_ = false;
+    // This pass's last frame saw the G-buffer's last images if the G-buffer was drawn once since,
+    // its current ones if it was not drawn (the view did not move); otherwise there is no history.
+    const bool gbufferRedrawn = gbuffer.recorded != lastGBufferFrame_;
+    if (gbufferRedrawn && gbuffer.recorded != lastGBufferFrame_ + 1) haveHistory_ = false;
     lastGBufferFrame_ = gbuffer.recorded;
+    const GpuImage& lastGBufferPosition = gbufferRedrawn ? gbuffer.lastPosition : gbuffer.position;
+    const GpuImage& lastGBufferNormal = gbufferRedrawn ? gbuffer.lastNormal : gbuffer.normal;
     const std::array<const GpuImage*, 3> nowImages{&now.light, &now.positions, &now.normals};
 
     if (frameCount_ == 0)  // the last frame's images are bound, unread, before anything wrote them
@@ -164,8 +168,8 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(9, now.positions.view, point)
         .sampledImage(10, now.normals.view, point)
         .sampledImage(12, lastSamples.view, point)
-        .sampledImage(13, gbuffer.lastPosition.view, point)
-        .sampledImage(14, gbuffer.lastNormal.view, point)
+        .sampledImage(13, lastGBufferPosition.view, point)
+        .sampledImage(14, lastGBufferNormal.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
     vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);

@@ -38,6 +38,7 @@ FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings) {
     for (Pass pass : kPipelineOrder) {
         bool run = true;
         if (pass == Pass::Shadow) run = stale.shadows;
+        if (pass == Pass::GBuffer) run = stale.view;
         if (pass == Pass::Voxelize) run = voxelize;
         if (pass == Pass::Inject || pass == Pass::Mips) run = inject;
         if (pass == Pass::Bounce) run = inject && bounces != 1 && !progressive;
@@ -52,6 +53,7 @@ StaleInputs afterFrame(const StaleInputs& stale, const FramePlan& plan, bool con
     StaleInputs after = stale;
     if (plan.runs(Pass::Shadow)) after.shadows = false;
     if (plan.runs(Pass::Voxelize)) after.voxels = false;
+    if (plan.runs(Pass::GBuffer)) after.view = false;
     if (plan.runs(Pass::Inject)) {
         after.radiance = false;
         after.bounces = !converged;

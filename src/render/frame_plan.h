@@ -1,5 +1,6 @@
 // Which passes a frame runs, as data: a pure function of what is out of date and the settings,
-// tested on the CPU (tests/cpu/frame_plan_test.cpp). Shadow maps are redrawn when a light moved;
+// tested on the CPU (tests/cpu/frame_plan_test.cpp). Shadow maps are redrawn when a light moved,
+// the G-buffer when the view changed;
 // the scene is voxelized once per geometry; light is re-injected (and the mips rebuilt) when a
 // light changed or the voxels were rebuilt; and no voxel pass runs while the image shows nothing
 // that reads the voxels. With converged bounces the injection gathers the voxels' own cones from
@@ -31,6 +32,7 @@ struct StaleInputs {
     bool voxels = true;    // geometry changed
     bool radiance = true;  // lights changed
     bool bounces = false;  // the bounce series has not converged yet (progressive bounces)
+    bool view = true;      // the camera moved, or the scene or the image size changed: the G-buffer
     bool operator==(const StaleInputs&) const = default;
 };
 

@@ -109,6 +109,7 @@ void Renderer::resize(const ImageSettings& image) {
                                                    : nullptr;
     shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
     resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.image.supersample);
+    stale_.view = true;
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
@@ -214,6 +215,10 @@ FrameStats Renderer::renderFrame() {
     const auto start = std::chrono::steady_clock::now();
     FrameStats stats;
     const glm::mat4 viewProjection = writeFrameConstants();
+    // The G-buffer holds the view alone: a frame whose camera did not move (a light steered, the
+    // light settling) shades the last one's again.
+    if (viewProjection != gbufferViewProjection_) stale_.view = true;
+    gbufferViewProjection_ = viewProjection;
     stats.plan = planFrame(stale_, settings_);
     const FramePlan& plan = stats.plan;
     const bool converging = settings_.resources.bounces == kConvergedBounces;

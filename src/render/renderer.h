@@ -113,6 +113,7 @@ private:
     glm::vec3 skyMean_{1.0f};            // the environment image's mean radiance (1 without one)
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
+    glm::mat4 gbufferViewProjection_{0.0f};                // the last frame's camera
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass
     float brightestEmission_ = 0.0f;
     bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter

@@ -22,14 +22,22 @@ TEST(FramePlan, FirstFrameRunsEveryPassInPipelineOrder) {
 }
 
 TEST(FramePlan, NothingChangedRunsOnlyTheImagePasses) {
-    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false};
-    EXPECT_EQ(names(planFrame(nothing, RenderSettings{})), (Names{"gbuffer", "shade", "resolve"}));
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false, .view = false};
+    EXPECT_EQ(names(planFrame(nothing, RenderSettings{})), (Names{"shade", "resolve"}));
+}
+
+TEST(FramePlan, OnlyAChangedViewRedrawsTheGBuffer) {
+    const StaleInputs view{.shadows = false, .voxels = false, .radiance = false, .view = true};
+    EXPECT_EQ(names(planFrame(view, RenderSettings{})), (Names{"gbuffer", "shade", "resolve"}));
+    const StaleInputs light{.shadows = true, .voxels = false, .radiance = true, .view = false};
+    EXPECT_FALSE(planFrame(light, RenderSettings{}).runs(Pass::GBuffer));
+    EXPECT_FALSE(afterFrame(view, planFrame(view, RenderSettings{}), true).view);
 }
 
 TEST(FramePlan, AMovedLightRedrawsShadowsAndReinjectsWithoutRevoxelizing) {
-    const StaleInputs light{.shadows = true, .voxels = false, .radiance = true};
+    const StaleInputs light{.shadows = true, .voxels = false, .radiance = true, .view = false};
     EXPECT_EQ(names(planFrame(light, RenderSettings{})),
-              (Names{"shadow", "inject", "mips", "bounce", "gbuffer", "shade", "resolve"}));
+              (Names{"shadow", "inject", "mips", "bounce", "shade", "resolve"}));
 }
 
 TEST(FramePlan, NewVoxelsAreLitEvenWhenNoLightChanged) {
@@ -109,10 +117,10 @@ TEST(FramePlan, ProgressiveBouncesInjectOncePerFrameUntilTheLightConverges) {
     // Not converged yet: the next frame, though nothing changed, bounces again.
     const StaleInputs settling = afterFrame(StaleInputs{}, first, false);
     EXPECT_TRUE(settling.bounces);
-    EXPECT_EQ(names(planFrame(settling, settings)), (Names{"inject", "mips", "gbuffer", "shade", "resolve"}));
+    EXPECT_EQ(names(planFrame(settling, settings)), (Names{"inject", "mips", "shade", "resolve"}));
     // Converged: still frames run no voxel pass.
     const StaleInputs settled = afterFrame(settling, planFrame(settling, settings), true);
-    EXPECT_EQ(names(planFrame(settled, settings)), (Names{"gbuffer", "shade", "resolve"}));
+    EXPECT_EQ(names(planFrame(settled, settings)), (Names{"shade", "resolve"}));
 }
 
 TEST(FramePlan, ProgressiveBouncesSpreadTheirConesOverSlicesOfABoundedSize) {
@@ -133,7 +141,7 @@ TEST(FramePlan, ProgressiveBouncesSpreadTheirConesOverSlicesOfABoundedSize) {
 TEST(FramePlan, AfterAFullFrameNothingIsStale) {
     const FramePlan plan = planFrame(StaleInputs{}, RenderSettings{});
     EXPECT_EQ(afterFrame(StaleInputs{}, plan, true),
-              (StaleInputs{.shadows = false, .voxels = false, .radiance = false, .bounces = false}));
+              (StaleInputs{.shadows = false, .voxels = false, .radiance = false, .bounces = false, .view = false}));
 }
 
 TEST(FramePlan, SkippedPassesAreTheRestInPipelineOrder) {
