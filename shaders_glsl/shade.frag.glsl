@@ -35,6 +35,12 @@ layout(std430, set = 0, binding = 20) readonly buffer LtcTable { GpuLtcEntry ltc
 // costs lavapipe even where it never runs (a 1280×720 frame's shading took 6× longer), is left out.
 layout(constant_id = 3) const bool WITH_AREA_LIGHTS = true;
 #define AREA_LIGHTS_COMPILED WITH_AREA_LIGHTS
+// Whether some sun, and some spot or point light, casts shadows: the maps of a kind the scene
+// lacks are not read (lavapipe would read them at every PCF tap).
+layout(constant_id = 4) const bool WITH_SUN_SHADOWS = true;
+layout(constant_id = 5) const bool WITH_LOCAL_SHADOWS = true;
+#define SUN_SHADOWS_COMPILED WITH_SUN_SHADOWS
+#define LOCAL_SHADOWS_COMPILED WITH_LOCAL_SHADOWS
 
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"

@@ -325,6 +325,8 @@ FrameStats Renderer::renderFrame() {
                 .tracesDiffuseCones = !reducedDiffuse && needsDiffuseCones(settings_.shading),
                 .tracesSpecularCone = anySpecularMaterial_ && effectiveComponents(settings_.shading).indirectSpecular,
                 .areaLights = !areaLights_.empty() && settings_.shading.components.areaLights,
+                .sunShadows = shadowLayout_.sunLayers > 0,
+                .localShadows = shadowLayout_.localLayers > 0,
             };
             const ShadeInputs inputs{frameConstants_.buffer,
                                      sceneGpu_->materials.buffer,

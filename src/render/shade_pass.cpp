@@ -26,7 +26,7 @@ const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
     desc.fragmentShader = "shade.frag";
     desc.colorFormats = {radiance.desc.format};
     desc.fragmentSpecialization = {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone,
-                                   variant.areaLights};
+                                   variant.areaLights, variant.sunShadows,         variant.localShadows};
     slot = createGraphicsPipeline(context_, desc);
     return slot;
 }
