@@ -11,11 +11,12 @@
 //   3. diffuse_upsample.comp blends, for every sample, the four representatives around it,
 //      bilinearly, keeping those on the sample's own surface: facing the same way and within half
 //      a voxel of its tangent plane. Where those carry less than half of the weight (an edge, a
-//      corner, a thin object), the sample takes its own light of the last frame as step 1 does
-//      (from the last frame's per-sample light and G-buffer), a quarter of them tracing anew each
-//      frame, or is listed: near a concave corner the far side is rejected, and renormalizing over
-//      the near side alone would carry its brighter light into the corner (+1.3 % on the Cornell
-//      box at a quarter).
+//      corner, a thin object), the sample is listed: near a concave corner the far side is
+//      rejected, and renormalizing over the near side alone would carry its brighter light into
+//      the corner (+1.3 % on the Cornell box at a quarter).
+//   3b. diffuse_edge_history.comp: each listed sample takes its own light of the last frame as
+//      step 1 does (from the last frame's per-sample light and G-buffer), a quarter of them
+//      tracing anew each frame, or is listed again.
 //   4. diffuse_trace_list.comp traces the listed samples' own cones.
 // The shading pass then reads one texel per sample. Without history every block and edge sample
 // traces, and the image is the same as without reuse; a still view is the same to rounding; light

@@ -61,6 +61,9 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
     tracedSamples = Buffer(context, VkDeviceSize(reducedWide) * reducedHigh * sizeof(uint32_t),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     tracedList = listHeader(context);
+    edgeSamples = Buffer(context, VkDeviceSize(samplesWide) * samplesHigh * sizeof(uint32_t),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+    edgeList = listHeader(context);
     fallbackSamples = Buffer(context, VkDeviceSize(samplesWide) * samplesHigh * sizeof(uint32_t),
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     fallbackList = listHeader(context);
@@ -68,6 +71,7 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
     pointSampler = Sampler(context, nearestClampSampler());
     reprojectPipeline = createComputePipeline(context, "diffuse_reproject.comp");
     upsamplePipeline = createComputePipeline(context, "diffuse_upsample.comp");
+    edgeHistoryPipeline = createComputePipeline(context, "diffuse_edge_history.comp");
     traceListPipeline = createComputePipeline(context, "diffuse_trace_list.comp");
 }
 
@@ -95,11 +99,12 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 
-    // Both lists start empty, once the last frame's dispatches have read them.
+    // The lists start empty, once the last frame's dispatches have read them.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE);
     const glsl::WorkListHeader empty{0u, 1u, 1u, 0u};
     vkCmdUpdateBuffer(commands, tracedList.buffer, 0, sizeof(empty), &empty);
+    vkCmdUpdateBuffer(commands, edgeList.buffer, 0, sizeof(empty), &empty);
     vkCmdUpdateBuffer(commands, fallbackList.buffer, 0, sizeof(empty), &empty);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -160,19 +165,35 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
         .storageImage(1, nowSamples.view)
-        .buffer(2, fallbackSamples.buffer)
-        .buffer(3, fallbackList.buffer)
+        .buffer(2, edgeSamples.buffer)
+        .buffer(3, edgeList.buffer)
         .sampledImage(6, gbuffer.position.view, point)
         .sampledImage(7, gbuffer.normal.view, point)
         .sampledImage(8, now.light.view, point)
         .sampledImage(9, now.positions.view, point)
         .sampledImage(10, now.normals.view, point)
-        .sampledImage(12, lastSamples.view, point)
-        .sampledImage(13, lastGBufferPosition.view, point)
-        .sampledImage(14, lastGBufferNormal.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
     vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
+    listWritten(commands);
+
+    // 3b. The listed samples' own light of the last frame, or listed again to trace.
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline.pipeline);
+    DescriptorPush()
+        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .storageImage(1, nowSamples.view)
+        .buffer(2, fallbackSamples.buffer)
+        .buffer(3, fallbackList.buffer)
+        .buffer(4, edgeSamples.buffer)
+        .buffer(5, edgeList.buffer)
+        .sampledImage(6, gbuffer.position.view, point)
+        .sampledImage(7, gbuffer.normal.view, point)
+        .sampledImage(12, lastSamples.view, point)
+        .sampledImage(13, lastGBufferPosition.view, point)
+        .sampledImage(14, lastGBufferNormal.view, point)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline.layout);
+    vkCmdPushConstants(commands, edgeHistoryPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
+    vkCmdDispatchIndirect(commands, edgeList.buffer, 0);
     listWritten(commands);
 
     // 4. The listed samples' own cones, into the texels step 3 left.
@@ -198,6 +219,7 @@ uint64_t DiffuseConesPass::memoryBytes() const {
     for (const Reduced& frame : reduced)
         bytes += frame.light.memorySize + frame.positions.memorySize + frame.normals.memorySize;
     for (const GpuImage& perSample : samples) bytes += perSample.memorySize;
+    for (const Buffer* list : {&tracedSamples, &edgeSamples, &fallbackSamples}) bytes += list->size;
     return bytes;
 }
 

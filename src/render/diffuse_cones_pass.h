@@ -54,11 +54,13 @@ struct DiffuseConesPass {
     GpuImage samples[2];     // per sample, this frame's and the last one's: what diffuse() returns
     Buffer tracedSamples;    // the representatives that trace this frame, packed 16 bits a coordinate
     Buffer tracedList;       // glsl::WorkListHeader over them
+    Buffer edgeSamples;      // the samples that could not be upsampled
+    Buffer edgeList;         // glsl::WorkListHeader over them
     Buffer fallbackSamples;  // the samples that trace their own cones
     Buffer fallbackList;     // glsl::WorkListHeader over them
     Buffer listHeaders;      // host-visible copies of both headers, for the counts above
     Sampler pointSampler;
-    Pipeline reprojectPipeline, upsamplePipeline, traceListPipeline;
+    Pipeline reprojectPipeline, upsamplePipeline, edgeHistoryPipeline, traceListPipeline;
 
 private:
     GpuContext& context_;
