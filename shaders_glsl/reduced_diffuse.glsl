@@ -54,27 +54,46 @@ struct SurfaceBlend {
     float weight;
 };
 
-SurfaceBlend blendOnSurface(sampler2D light, sampler2D positions, sampler2D normals, vec2 q, vec3 position,
-                            vec3 normal) {
-    ivec2 base = ivec2(floor(q));
-    vec2 fraction = q - vec2(base);
+// The four texels from `base` (+x, +y), clamped to the image: what blendOnSurface reads.
+struct TexelQuad {
+    vec4 positions[4];
+    vec3 normals[4];
+    vec4 light[4];
+};
+
+TexelQuad fetchQuad(sampler2D light, sampler2D positions, sampler2D normals, ivec2 base) {
     ivec2 last = textureSize(light, 0) - 1;
+    TexelQuad quad;
+    for (int i = 0; i < 4; ++i) {
+        ivec2 texel = clamp(base + ivec2(i & 1, i >> 1), ivec2(0), last);
+        quad.positions[i] = texelFetch(positions, texel, 0);
+        quad.normals[i] = normalize(texelFetch(normals, texel, 0).xyz);
+        quad.light[i] = texelFetch(light, texel, 0);
+    }
+    return quad;
+}
+
+// The blend of a quad at `fraction` of the way from its first texel to its last.
+SurfaceBlend blendQuad(TexelQuad quad, vec2 fraction, vec3 position, vec3 normal) {
     float voxelSize = frame.grid.originVoxelSize.w;
     SurfaceBlend blend = SurfaceBlend(vec4(0.0f), 0.0f);
     for (int i = 0; i < 4; ++i) {
-        ivec2 offset = ivec2(i & 1, i >> 1);
-        ivec2 texel = clamp(base + offset, ivec2(0), last);
-        vec4 sourcePosition = texelFetch(positions, texel, 0);
+        vec4 sourcePosition = quad.positions[i];
         if (sourcePosition.w < 0.5f) continue;  // background: nothing was gathered
         float planeDistance = abs(dot(normal, sourcePosition.xyz - position)) / voxelSize;
         if (planeDistance > UPSAMPLE_PLANE_TOLERANCE) continue;
-        vec3 sourceNormal = normalize(texelFetch(normals, texel, 0).xyz);
-        vec2 bilinear = mix(1.0f - fraction, fraction, vec2(offset));
-        float weight = bilinear.x * bilinear.y * pow(max(dot(normal, sourceNormal), 0.0f), UPSAMPLE_NORMAL_POWER);
-        blend.sum += weight * texelFetch(light, texel, 0);
+        vec2 bilinear = mix(1.0f - fraction, fraction, vec2(ivec2(i & 1, i >> 1)));
+        float weight = bilinear.x * bilinear.y * pow(max(dot(normal, quad.normals[i]), 0.0f), UPSAMPLE_NORMAL_POWER);
+        blend.sum += weight * quad.light[i];
         blend.weight += weight;
     }
     return blend;
+}
+
+SurfaceBlend blendOnSurface(sampler2D light, sampler2D positions, sampler2D normals, vec2 q, vec3 position,
+                            vec3 normal) {
+    ivec2 base = ivec2(floor(q));
+    return blendQuad(fetchQuad(light, positions, normals, base), q - vec2(base), position, normal);
 }
 
 // Whether the reduced texel or the sample at `coordinate` traces anew this frame whatever its history: a

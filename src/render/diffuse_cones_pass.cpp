@@ -83,7 +83,6 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     const uint32_t reducedWidth = now.light.desc.extent.width, reducedHeight = now.light.desc.extent.height;
     const GpuImage& nowSamples = samples[frameCount_ % 2];
     const GpuImage& lastSamples = samples[(frameCount_ + 1) % 2];
-    const uint32_t width = nowSamples.desc.extent.width, height = nowSamples.desc.extent.height;
     // This pass's last frame saw the G-buffer's last images if the G-buffer was drawn once since,
     // its current ones if it was not drawn (the view did not move); otherwise there is no history.
     const bool gbufferRedrawn = gbuffer.recorded != lastGBufferFrame_;
@@ -174,7 +173,9 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(10, now.normals.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
     vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
-    vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
+    // One invocation per cell between four representatives, from the one before the first.
+    const uint32_t cellsWide = reducedWidth + 1, cellsHigh = reducedHeight + 1;
+    vkCmdDispatch(commands, (cellsWide + 7) / 8, (cellsHigh + 7) / 8, 1);
     listWritten(commands);
 
     // 3b. The listed samples' own light of the last frame, or listed again to trace.
