@@ -75,6 +75,8 @@ const uint USE_SHADOWS = 64u;
 // Emissive surfaces light the room as area lights; without it their emission is put into the
 // voxels and reaches other surfaces only through the cones (the classic VCT way).
 const uint USE_AREA_LIGHTS = 128u;
+// The flags the voxels' light depends on (inject.comp.glsl): a change converges it again.
+const uint VOXEL_LIGHT_FLAGS = USE_SHADOWS | USE_AREA_LIGHTS;
 
 // The frame's constants, one uniform block (std140: every member sits at its natural offset, which
 // the C++ side checks with static_asserts).

@@ -27,6 +27,12 @@ layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occu
 layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
 layout(set = 0, binding = 12, rgba16f) uniform readonly image3D voxelEmission;
 layout(set = 0, binding = 13) uniform sampler2DArrayShadow areaShadowMaps;
+// The area lights' irradiance at each listed voxel (three floats an item), kept between injections:
+// it changes only with the voxels, the area lights' maps or the components shown, and it is most of
+// an injection's cost where there are area lights. A pipeline of its own reads it (lavapipe would
+// run the area lights' code beside the read); this one writes it.
+layout(std430, set = 0, binding = 14) buffer AreaLightCache { float keptAreaLight[]; };
+layout(constant_id = 0) const bool AREA_LIGHTS_CACHED = false;
 layout(push_constant) uniform Push { uint addGathered; };
 
 #include "voxel_grid.h"
@@ -43,7 +49,7 @@ vec3 areaLightOnVoxel(GpuLight light, vec3 center, vec3 normalSum, float normalL
     return irradiance * areaLightVisibility(light, lookup, normal, distance(light.positionRange.xyz, lookup), false);
 }
 
-void injectVoxel(ivec3 voxel) {
+void injectVoxel(uint item, ivec3 voxel) {
     vec4 albedoOpacity = imageLoad(voxelAlbedo, voxel);
     vec3 normalSum = imageLoad(voxelNormal, voxel).xyz;
     float normalLength = length(normalSum);
@@ -53,9 +59,16 @@ void injectVoxel(ivec3 voxel) {
     bool areaLights = (frame.componentFlags & USE_AREA_LIGHTS) != 0u;
     vec3 irradiance = vec3(0.0f);
     // Area lights and punctual ones in loops of their own (as in direct_light.glsl's directLight).
-    if (areaLights)
-        for (uint i = frame.firstAreaLight; i < frame.lightCount; ++i)
-            irradiance += areaLightOnVoxel(lights[i], center, normalSum, normalLength, voxelSize);
+    if (areaLights && frame.firstAreaLight < frame.lightCount) {
+        if (AREA_LIGHTS_CACHED) {
+            irradiance = vec3(keptAreaLight[3u * item], keptAreaLight[3u * item + 1u],
+                              keptAreaLight[3u * item + 2u]);
+        } else {
+            for (uint i = frame.firstAreaLight; i < frame.lightCount; ++i)
+                irradiance += areaLightOnVoxel(lights[i], center, normalSum, normalLength, voxelSize);
+            for (uint c = 0u; c < 3u; ++c) keptAreaLight[3u * item + c] = irradiance[c];
+        }
+    }
     for (uint i = 0u; i < frame.firstAreaLight; ++i) {
         GpuLight light = lights[i];
         vec3 toLight;
@@ -87,5 +100,5 @@ void main() {
     // The dispatch may be capped below ⌈count / group size⌉: each invocation strides over the rest.
     uint stride = gl_NumWorkGroups.x * WORK_LIST_GROUP_SIZE;
     for (uint i = gl_GlobalInvocationID.x; i < occupied.count; i += stride)
-        injectVoxel(ivec3(unpackCell(occupiedVoxels[i])));
+        injectVoxel(i, ivec3(unpackCell(occupiedVoxels[i])));
 }

@@ -7,9 +7,21 @@
 namespace vct {
 
 InjectPass::InjectPass(GpuContext& context)
-    : pipeline(createComputePipeline(context, "inject.comp")),
+    : pipeline(createComputePipeline(context, "inject.comp", {}, {0u})),
+      cachedAreaPipeline(createComputePipeline(context, "inject.comp", {}, {1u})),
       gatherPipeline(createComputePipeline(context, "bounce_gather.comp")),
-      context_(context) {}
+      context_(context) {
+    forgetAreaLights(0);
+}
+
+void InjectPass::forgetAreaLights(uint32_t occupiedVoxels) {
+    areaLightsCached_ = false;
+    if (occupiedVoxels == areaLightCapacity_ && areaLightCache_.buffer != VK_NULL_HANDLE) return;
+    // A buffer of at least one item, so the binding is valid where nothing is kept.
+    areaLightCapacity_ = occupiedVoxels;
+    areaLightCache_ = Buffer(context_, VkDeviceSize(std::max(occupiedVoxels, 1u)) * 3 * sizeof(float),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+}
 
 void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const LightBuffers& lights,
                         const ShadowPass& shadows, VoxelVolumes& volumes, bool addGathered) {
@@ -17,7 +29,8 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+    const Pipeline& chosen = areaLightsCached_ ? cachedAreaPipeline : pipeline;
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, chosen.pipeline);
     // Without a bounce target (one bounce) nothing is added: the radiance volume stands in.
     const VkImageView gathered = addGathered ? volumes.gatheredLight.view : volumes.lightLevelZeroViews()[0];
     DescriptorPush()
@@ -35,10 +48,12 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
         .buffer(11, volumes.occupiedDispatch.buffer)
         .storageImage(12, volumes.emission.view)
         .sampledImage(13, shadows.areaMaps.view, shadows.compareSampler.sampler)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+        .buffer(14, areaLightCache_.buffer)
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, chosen.layout);
     const uint32_t add = addGathered ? 1u : 0u;
-    vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);
+    vkCmdPushConstants(commands, chosen.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);
     vkCmdDispatchIndirect(commands, volumes.occupiedDispatch.buffer, 0);
+    areaLightsCached_ = areaLightCapacity_ > 0;  // what this injection wrote, the next ones read
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);

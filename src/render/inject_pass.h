@@ -16,9 +16,15 @@ struct InjectPass {
 
     // Writes level 0 of volumes.radiance from the scene voxels: the light sources' light reflected
     // once, plus (addGathered) what the last gather left in volumes.gatheredLight. Visible to the
-    // mip pass after.
+    // mip pass after. The area lights' part is computed once and kept until forgetAreaLights().
     void record(VkCommandBuffer commands, VkBuffer frameConstants, const LightBuffers& lights,
                 const ShadowPass& shadows, VoxelVolumes& volumes, bool addGathered);
+
+    // New voxels (with room for the area lights' irradiance at `occupiedVoxels` of them; 0 where the
+    // scene has no area lights), new area-light shadow maps, or other components shown: the next
+    // injection computes the area lights' part anew. Not while commands that use the pass run.
+    void forgetAreaLights(uint32_t occupiedVoxels);
+    void forgetAreaLights() { forgetAreaLights(areaLightCapacity_); }
 
     // Every sliceCount-th occupied voxel from slicePhase gathers the light of the current
     // (mipmapped) volume through its diffuse cones into volumes.gatheredLight; {1, 0} is all.
@@ -29,11 +35,15 @@ struct InjectPass {
     void recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
                       const SkyImage& sky, Slice slice, uint32_t occupiedVoxels);
 
-    Pipeline pipeline;
+    Pipeline pipeline;            // computes the area lights' part, and keeps it
+    Pipeline cachedAreaPipeline;  // reads it
     Pipeline gatherPipeline;
 
 private:
     GpuContext& context_;
+    Buffer areaLightCache_;  // three floats per occupied voxel
+    uint32_t areaLightCapacity_ = 0;
+    bool areaLightsCached_ = false;
 };
 
 // The scale that keeps the stored radiance inside float16's range whatever the scene's units:

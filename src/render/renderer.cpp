@@ -165,7 +165,13 @@ void Renderer::setEnvironment(glm::vec3 environment) {
 void Renderer::setShading(const ShadingSettings& shading) {
     // Other cones gather other light: the reduced diffuse light of the last frames no longer holds.
     if (diffuseConesPass_ && shading != settings_.shading) diffuseConesPass_->forgetHistory();
+    // Shadows or area lights switched on or off light the voxels differently.
+    if (voxelLightFlags(shading) != voxelLightFlags(settings_.shading)) stale_.radiance = true;
     settings_.shading = shading;
+}
+
+uint32_t Renderer::voxelLightFlags(const ShadingSettings& shading) {
+    return componentFlags(effectiveComponents(shading)) & glsl::VOXEL_LIGHT_FLAGS;
 }
 
 glm::mat4 Renderer::writeFrameConstants() {
@@ -243,6 +249,13 @@ FrameStats Renderer::renderFrame() {
         timer_.end(commands);
     };
 
+    // The area lights' light on the voxels is kept between injections while the voxels, the area
+    // lights' maps and the components shown stay as they were.
+    const uint32_t flags = voxelLightFlags(settings_.shading);
+    if ((plan.runs(Pass::Shadow) && (staleShadowArrays_ & shadowArrayBit(ShadowArray::Area))) ||
+        (plan.runs(Pass::Inject) && flags != injectedFlags_))
+        injectPass_.forgetAreaLights();
+    if (plan.runs(Pass::Inject)) injectedFlags_ = flags;
     // The voxelizer's count of occupied voxels sizes the progressive slices: read between submissions.
     if (plan.runs(Pass::Shadow) || plan.runs(Pass::Voxelize))
         submit([&](VkCommandBuffer commands) {
@@ -255,8 +268,10 @@ FrameStats Renderer::renderFrame() {
                 recordOccupiedCount(commands);
             });
         });
-    if (plan.runs(Pass::Voxelize))
+    if (plan.runs(Pass::Voxelize)) {
         occupiedVoxels_ = static_cast<const glsl::WorkListHeader*>(occupiedHeader_.mapped)->count;
+        injectPass_.forgetAreaLights(areaLights_.empty() ? 0 : occupiedVoxels_);
+    }
     const uint32_t slices = progressiveSlices(settings_, occupiedVoxels_);
     const InjectPass::Slice slice{slices, slicePhase_ % slices};
     stats.occupiedVoxels = occupiedVoxels_;

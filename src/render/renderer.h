@@ -94,6 +94,8 @@ public:
 
 private:
     glm::mat4 writeFrameConstants();  // returns the camera's view-projection it wrote
+    // The components the voxels' light depends on (glsl::VOXEL_LIGHT_FLAGS) as `shading` shows them.
+    static uint32_t voxelLightFlags(const ShadingSettings& shading);
     // Copies the radiance volume's mean (its 1×1×1 level) to meanRadiance_, and tells, once the
     // commands ran, whether it moved by less than kBounceTolerance since the last time.
     void recordMeanRadiance(VkCommandBuffer commands);
@@ -114,6 +116,7 @@ private:
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
     glm::mat4 gbufferViewProjection_{0.0f};                // the last frame's camera
+    uint32_t injectedFlags_ = 0;                           // voxelLightFlags of the last injection
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass
     float brightestEmission_ = 0.0f;
     bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter

@@ -93,6 +93,38 @@ TEST_F(Frame, GeometryMoveRevoxelizesAndRedrawsShadows) {
     for (const char* pass : {"shadow", "voxelize", "inject", "mips"}) EXPECT_TRUE(stats.ran(pass)) << pass;
 }
 
+static bool sameImages(const Image& a, const Image& b) {
+    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
+
+TEST_F(Frame, SwitchingShadowsOrAreaLightsRelightsTheVoxels) {
+    // The voxels' light depends on both (and the area lights' part of it is kept between
+    // injections): switched off and on again, the indirect light is a fresh render's each time.
+    const Scene emissive = loadScene("cornell-emissive");
+    RenderSettings on = smallSettings();
+    on.shading.mode = RenderMode::Indirect;
+    const auto freshImage = [&](const RenderSettings& settings) {
+        Renderer fresh(gpu(), emissive, settings);
+        fresh.renderFrame();
+        return fresh.readImage();
+    };
+    const Image expectedOn = freshImage(on);
+    for (bool Components::*component : {&Components::shadows, &Components::areaLights}) {
+        RenderSettings off = on;
+        off.shading.components.*component = false;
+        const Image expectedOff = freshImage(off);
+        EXPECT_FALSE(sameImages(expectedOn, expectedOff)) << "the component made no difference";
+        Renderer toggled(gpu(), emissive, on);
+        toggled.renderFrame();
+        toggled.setShading(off.shading);
+        toggled.renderFrame();
+        EXPECT_TRUE(sameImages(toggled.readImage(), expectedOff));
+        toggled.setShading(on.shading);
+        toggled.renderFrame();
+        EXPECT_TRUE(sameImages(toggled.readImage(), expectedOn));
+    }
+}
+
 TEST_F(Frame, RemovedGeometryLeavesNoLightBehind) {
     // The light passes visit only the occupied voxels, so the voxelizer must clear the light of
     // voxels that became empty: the frame after the tall block is removed equals a fresh render
