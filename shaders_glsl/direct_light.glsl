@@ -54,7 +54,7 @@ vec3 areaLightReflected(GpuLight light, SurfacePoint surface, uint flags) {
                                 max(dot(surface.toViewer, H), 0.0f)) * irradiance;
     }
 #ifdef AREA_LIGHT_SPECULAR
-    if ((flags & SHOW_DIRECT_SPECULAR) != 0u)
+    if (AREA_LIGHT_SPECULAR_COMPILED && (flags & SHOW_DIRECT_SPECULAR) != 0u)
         radiance += areaLightSpecular(light, surface.position, surface.normal, surface.toViewer, surface.baseColor,
                                       surface.metallic, surface.roughness, surface.specularWeight);
 #endif

@@ -32,7 +32,11 @@ const float TAN_LIGHT_ANGULAR_RADIUS = 0.0094f;
 #ifndef AREA_LIGHTS_COMPILED
 #define AREA_LIGHTS_COMPILED true
 #endif
-// ... and the reads of the sun's or the local lights' maps, where the scene has none of them.
+// ... and the reads of the sun's or the local lights' maps, where the scene has none of them; and
+// the area lights' highlights (AREA_LIGHT_SPECULAR_COMPILED), where no material reflects specularly.
+#ifndef AREA_LIGHT_SPECULAR_COMPILED
+#define AREA_LIGHT_SPECULAR_COMPILED true
+#endif
 #ifndef SUN_SHADOWS_COMPILED
 #define SUN_SHADOWS_COMPILED true
 #endif

@@ -342,6 +342,7 @@ FrameStats Renderer::renderFrame() {
                 .areaLights = !areaLights_.empty() && settings_.shading.components.areaLights,
                 .sunShadows = shadowLayout_.sunLayers > 0,
                 .localShadows = shadowLayout_.localLayers > 0,
+                .areaLightSpecular = anySpecularMaterial_,
             };
             const ShadeInputs inputs{frameConstants_.buffer,
                                      sceneGpu_->materials.buffer,

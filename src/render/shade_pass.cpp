@@ -25,8 +25,9 @@ const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
     desc.vertexShader = "fullscreen.vert";
     desc.fragmentShader = "shade.frag";
     desc.colorFormats = {radiance.desc.format};
-    desc.fragmentSpecialization = {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone,
-                                   variant.areaLights, variant.sunShadows,         variant.localShadows};
+    desc.fragmentSpecialization = {variant.debugViews,       variant.tracesDiffuseCones, variant.tracesSpecularCone,
+                                   variant.areaLights,       variant.sunShadows,         variant.localShadows,
+                                   variant.areaLightSpecular};
     slot = createGraphicsPipeline(context_, desc);
     return slot;
 }

@@ -22,9 +22,11 @@ struct ShadeVariant {
     bool areaLights = false;          // the scene has area lights and the component is on
     bool sunShadows = true;           // some sun casts shadows (has a shadow map)
     bool localShadows = true;         // some spot or point light does
+    bool areaLightSpecular = true;    // some material reflects specularly (the area lights' highlights)
     uint32_t index() const {
         return (debugViews ? 1u : 0u) | (tracesDiffuseCones ? 2u : 0u) | (tracesSpecularCone ? 4u : 0u) |
-               (areaLights ? 8u : 0u) | (sunShadows ? 16u : 0u) | (localShadows ? 32u : 0u);
+               (areaLights ? 8u : 0u) | (sunShadows ? 16u : 0u) | (localShadows ? 32u : 0u) |
+               (areaLightSpecular ? 64u : 0u);
     }
 };
 
@@ -52,7 +54,7 @@ struct ShadePass {
 private:
     // Built the first time a frame asks for its variant.
     const Pipeline& pipeline(const ShadeVariant& variant);
-    std::array<Pipeline, 64> pipelines_;
+    std::array<Pipeline, 128> pipelines_;
     GpuContext& context_;
 };
 
