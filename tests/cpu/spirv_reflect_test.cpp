@@ -203,7 +203,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     // inject.comp.glsl: frame, lights, shadow views, two shadow maps, albedo and normal, the area
     // lights' triangles, the radiance level it writes, the gathered light it adds, the occupied-voxel
-    // list and its count, and the voxels' emission; one invocation per listed voxel, 64 to a workgroup.
+    // list and its count, the voxels' emission, the area lights' maps and the area lights' light it
+    // keeps per voxel; one invocation per listed voxel, 64 to a workgroup.
     const ShaderReflection inject = reflectFile("inject.comp");
     EXPECT_EQ(inject.stage, kCompute);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute),
@@ -215,7 +216,8 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 12, kStorageImage, kCompute));
-    expected.push_back(binding(0, 13, kCombined, kCompute));  // the area lights' shadow maps
+    expected.push_back(binding(0, 13, kCombined, kCompute));       // the area lights' shadow maps
+    expected.push_back(binding(0, 14, kStorageBuffer, kCompute));  // the area lights' light, kept
     expectBindings(inject.bindings, expected);
     EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint addGathered
     EXPECT_EQ(inject.localSize[0], 64u);
