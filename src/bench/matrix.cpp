@@ -60,7 +60,7 @@ std::vector<std::string> settingLabelLegend() {
         "a40 = 40° cone aperture, s0.5 = step of 0.5 cone diameters,",
         "aniso / iso = six directional mip chains / one,",
         "bconv / b1 = bounces until converged / one bounce,",
-        "ss2 = 2×2 samples a pixel, sm4096 = 4096² sun shadow map,",
+        "ss2 = 2×2 samples a pixel, sm4096 = 4096² sun shadow map (else 2048²),",
         "d4 = diffuse cones traced once per 4×4 pixels; * = on the front",
     };
 }
