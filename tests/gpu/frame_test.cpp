@@ -13,16 +13,7 @@
 namespace vct::test {
 namespace {
 
-RenderSettings smallSettings() {
-    RenderSettings settings;
-    settings.image.width = 32;
-    settings.image.height = 32;
-    settings.image.supersample = 1;
-    settings.resources.voxelResolution = 32;
-    settings.resources.sunShadowMapSize = 256;
-    settings.resources.localShadowMapSize = 128;
-    return settings;
-}
+RenderSettings smallSettings() { return smallRenderSettings(32, RenderMode::Full); }
 
 class Frame : public GpuTest {
 protected:

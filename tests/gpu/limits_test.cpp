@@ -14,15 +14,7 @@
 namespace vct::test {
 namespace {
 
-RenderSettings smallSettings() {
-    RenderSettings settings;
-    settings.image.width = settings.image.height = 32;
-    settings.image.supersample = 1;
-    settings.resources.voxelResolution = 32;
-    settings.resources.sunShadowMapSize = 256;
-    settings.resources.localShadowMapSize = 128;
-    return settings;
-}
+RenderSettings smallSettings() { return smallRenderSettings(32, RenderMode::Full); }
 
 // The message of the vct::Error `check` throws, or "" when it throws none.
 template <typename Check>
