@@ -165,8 +165,12 @@ void Renderer::setEnvironment(glm::vec3 environment) {
 void Renderer::setShading(const ShadingSettings& shading) {
     // Other cones gather other light: the reduced diffuse light of the last frames no longer holds.
     if (diffuseConesPass_ && shading != settings_.shading) diffuseConesPass_->forgetHistory();
-    // Shadows or area lights switched on or off light the voxels differently.
-    if (voxelLightFlags(shading) != voxelLightFlags(settings_.shading)) stale_.radiance = true;
+    // Shadows or area lights switched on or off light the voxels differently, the area lights'
+    // part included.
+    if (voxelLightFlags(shading) != voxelLightFlags(settings_.shading)) {
+        stale_.radiance = true;
+        injectPass_.forgetAreaLights();
+    }
     settings_.shading = shading;
 }
 
@@ -250,12 +254,9 @@ FrameStats Renderer::renderFrame() {
     };
 
     // The area lights' light on the voxels is kept between injections while the voxels, the area
-    // lights' maps and the components shown stay as they were.
-    const uint32_t flags = voxelLightFlags(settings_.shading);
-    if ((plan.runs(Pass::Shadow) && (staleShadowArrays_ & shadowArrayBit(ShadowArray::Area))) ||
-        (plan.runs(Pass::Inject) && flags != injectedFlags_))
+    // lights' maps and the switches that light them (setShading) stay as they were.
+    if (plan.runs(Pass::Shadow) && (staleShadowArrays_ & shadowArrayBit(ShadowArray::Area)))
         injectPass_.forgetAreaLights();
-    if (plan.runs(Pass::Inject)) injectedFlags_ = flags;
     // The voxelizer's count of occupied voxels sizes the progressive slices: read between submissions.
     if (plan.runs(Pass::Shadow) || plan.runs(Pass::Voxelize))
         submit([&](VkCommandBuffer commands) {

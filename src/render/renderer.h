@@ -116,7 +116,6 @@ private:
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
     glm::mat4 gbufferViewProjection_{0.0f};                // the last frame's camera
-    uint32_t injectedFlags_ = 0;                           // voxelLightFlags of the last injection
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass
     float brightestEmission_ = 0.0f;
     bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter
