@@ -1,7 +1,7 @@
 // Cone tracing through the pre-filtered radiance volume (Crassin et al. 2011, section 3).
 // Requires: frame (FrameConstants), voxelRadiance (sampler3D with the mip chain; rgb is
 // radiance × scale premultiplied by opacity, a is opacity) and, for anisotropic voxels, the six
-// directional chains directionalVoxels[DIRECTION_*] (their level 0 is the grid's level 1).
+// directional chains directionalVoxels[AXIS_*] (their level 0 is the grid's level 1).
 #ifndef VCT_CONE_TRACING_GLSL
 #define VCT_CONE_TRACING_GLSL
 
@@ -19,12 +19,13 @@ vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
     if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
     float directionalLod = max(lod - 1.0f, 0.0f);
     vec3 weight = direction * direction;
-    vec4 alongX = direction.x >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_X], uvw, directionalLod)
-                                      : textureLod(directionalVoxels[DIRECTION_NEG_X], uvw, directionalLod);
-    vec4 alongY = direction.y >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Y], uvw, directionalLod)
-                                      : textureLod(directionalVoxels[DIRECTION_NEG_Y], uvw, directionalLod);
-    vec4 alongZ = direction.z >= 0.0f ? textureLod(directionalVoxels[DIRECTION_POS_Z], uvw, directionalLod)
-                                      : textureLod(directionalVoxels[DIRECTION_NEG_Z], uvw, directionalLod);
+    // The chain facing the direction, by coordinate: one fetch per axis (directional_chains.h).
+    vec4 alongX = textureLod(directionalVoxels[AXIS_X], vec3(uvw.xy, directionalDepth(uvw.z, direction.x < 0.0f)),
+                             directionalLod);
+    vec4 alongY = textureLod(directionalVoxels[AXIS_Y], vec3(uvw.xy, directionalDepth(uvw.z, direction.y < 0.0f)),
+                             directionalLod);
+    vec4 alongZ = textureLod(directionalVoxels[AXIS_Z], vec3(uvw.xy, directionalDepth(uvw.z, direction.z < 0.0f)),
+                             directionalLod);
     // Optical depth of each chain; an opaque texel counts as transmitting 1/1000.
     vec3 opacity = clamp(vec3(alongX.a, alongY.a, alongZ.a), 0.0f, 0.999f);
     vec3 depth = -log(1.0f - opacity) * weight;

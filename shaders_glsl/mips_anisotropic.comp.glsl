@@ -17,17 +17,17 @@
 // composite an opaque one carries forward (below), was the walk's last step. On lavapipe this is a
 // quarter of the reads of one invocation per texel and direction.
 #extension GL_GOOGLE_include_directive : require
+#include "directional_chains.h"
 #include "work_list.h"
 
 layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
-layout(set = 0, binding = 0, rgba16f) uniform readonly image3D finerPositive;  // seen along +axis
-layout(set = 0, binding = 1, rgba16f) uniform readonly image3D finerNegative;  // seen along −axis
-layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D coarserPositive;
-layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D coarserNegative;
+// The axis's two chains, one level and the next coarser (directional_chains.h).
+layout(set = 0, binding = 0, rgba16f) uniform readonly image3D finer;
+layout(set = 0, binding = 1, rgba16f) uniform writeonly image3D coarser;
 // The scene voxels' mean normals (not renormalized), read when the finer level is the grid's level 0.
-layout(set = 0, binding = 4, rgba16f) uniform readonly image3D sceneNormal;
-// Whether the finer level is the grid's level 0 (both `finer` views are then that level): a
-// pipeline each, since lavapipe reads the normals under a branch that skips them anyway.
+layout(set = 0, binding = 2, rgba16f) uniform readonly image3D sceneNormal;
+// Whether the finer level is the grid's level 0 (`finer` is then that level, the same for both
+// directions): a pipeline each, since lavapipe reads the normals under a branch that skips them anyway.
 layout(constant_id = 0) const bool FINER_IS_SCENE_LEVEL = false;
 layout(push_constant) uniform Push {
     uint axis;  // 0, 1, 2 = x, y, z
@@ -44,8 +44,11 @@ struct Seen {
     vec4 positive, negative;  // a child as rays along +axis and −axis see it
 };
 
+// Where the −axis chain starts along z in the finer and the coarser image.
+ivec3 finerNegativeStart, coarserNegativeStart;
+
 Seen seenFromBothSides(ivec3 voxel) {
-    Seen seen = Seen(imageLoad(finerPositive, voxel), imageLoad(finerNegative, voxel));
+    Seen seen = Seen(imageLoad(finer, voxel), imageLoad(finer, voxel + finerNegativeStart));
     if (FINER_IS_SCENE_LEVEL) {
         vec3 normal = imageLoad(sceneNormal, voxel).xyz;
         float normalLength = length(normal);
@@ -88,7 +91,10 @@ vec4 behindOpaque(vec4 value, vec4 front) {
 }
 
 void main() {
-    ivec3 size = imageSize(coarserPositive);
+    ivec3 size = imageSize(coarser);
+    size.z /= int(DIRECTIONAL_DEPTH_SIDES);
+    coarserNegativeStart = ivec3(0, 0, size.z * int(DIRECTIONAL_NEGATIVE_SIDES));
+    finerNegativeStart = FINER_IS_SCENE_LEVEL ? ivec3(0) : 2 * coarserNegativeStart;
     uint across1 = (axis + 1u) % 3u, across2 = (axis + 2u) % 3u;
     uint line = gl_GlobalInvocationID.x;
     if (line >= uint(size[across1] * size[across2])) return;
@@ -101,12 +107,12 @@ void main() {
     // Rays along +axis meet texel i−1 before i; rays along −axis meet i+1 before i, so the −axis
     // value of a texel is written one step later, once the next composite is known.
     Seen last = composite(texel, along);
-    imageStore(coarserPositive, texel, last.positive);
+    imageStore(coarser, texel, last.positive);
     for (int i = 1; i < size[axis]; ++i) {
         Seen current = composite(texel + along * i, along);
-        imageStore(coarserPositive, texel + along * i, behindOpaque(current.positive, last.positive));
-        imageStore(coarserNegative, texel + along * (i - 1), behindOpaque(last.negative, current.negative));
+        imageStore(coarser, texel + along * i, behindOpaque(current.positive, last.positive));
+        imageStore(coarser, coarserNegativeStart + texel + along * (i - 1), behindOpaque(last.negative, current.negative));
         last = current;
     }
-    imageStore(coarserNegative, texel + along * (size[axis] - 1), last.negative);
+    imageStore(coarser, coarserNegativeStart + texel + along * (size[axis] - 1), last.negative);
 }

@@ -32,16 +32,12 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.pipeline);
         const uint32_t size = std::max(directional[0].desc.extent.width >> level, 1u);
         for (uint32_t axis = 0; axis < 3; ++axis) {
-            // Directions 2·axis and 2·axis + 1 travel along +axis and −axis; the first directional
-            // level is built from the shared finest level.
-            const GpuImage& positive = directional[2 * axis];
-            const GpuImage& negative = directional[2 * axis + 1];
+            // The first directional level is built from the shared finest level.
+            const GpuImage& chains = directional[axis];
             DescriptorPush()
-                .storageImage(0, level == 0 ? mipView(volume, 0) : mipView(positive, level - 1))
-                .storageImage(1, level == 0 ? mipView(volume, 0) : mipView(negative, level - 1))
-                .storageImage(2, mipView(positive, level))
-                .storageImage(3, mipView(negative, level))
-                .storageImage(4, volumes.normal.view)
+                .storageImage(0, level == 0 ? mipView(volume, 0) : mipView(chains, level - 1))
+                .storageImage(1, mipView(chains, level))
+                .storageImage(2, volumes.normal.view)
                 .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.layout);
             vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(axis), &axis);
             // One invocation per line of texels along the axis.

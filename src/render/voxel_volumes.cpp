@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "directional_chains.h"
 #include "gpu/commands.h"
 #include "render/voxel_grid_fit.h"
 
@@ -11,16 +12,15 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
     const uint32_t side = resources.voxelResolution, mips = voxelMipCount(side);
     const VkFormat half = VK_FORMAT_R16G16B16A16_SFLOAT;
     std::vector<VoxelVolumeDesc> descs = {
-        {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, true},
-        {"voxel normal and count", half, 8, side, 1, true},
-        {"voxel emission", half, 8, side, 1, true},
-        {"voxel radiance", half, 8, side, mips, false},
+        {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, 1, true},
+        {"voxel normal and count", half, 8, side, 1, 1, true},
+        {"voxel emission", half, 8, side, 1, 1, true},
+        {"voxel radiance", half, 8, side, mips, 1, false},
     };
     if (resources.anisotropicVoxels)
-        for (const char* name : {"voxel radiance +x", "voxel radiance -x", "voxel radiance +y", "voxel radiance -y",
-                                 "voxel radiance +z", "voxel radiance -z"})
-            descs.push_back({name, half, 8, side / 2, mips - 1, false});
-    if (resources.bounces != 1) descs.push_back({"voxel gathered light", half, 8, side, 1, false});
+        for (const char* name : {"voxel radiance +x and -x", "voxel radiance +y and -y", "voxel radiance +z and -z"})
+            descs.push_back({name, half, 8, side / 2, mips - 1, glsl::DIRECTIONAL_DEPTH_SIDES, false});
+    if (resources.bounces != 1) descs.push_back({"voxel gathered light", half, 8, side, 1, 1, false});
     return descs;
 }
 
@@ -35,7 +35,7 @@ uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxel
         if (onlySceneVoxels && !desc.sceneVoxels) continue;
         for (uint32_t level = 0; level < desc.mipLevels; ++level) {
             const uint64_t side = std::max(desc.side >> level, 1u);
-            bytes += side * side * side * desc.texelBytes;
+            bytes += side * side * side * desc.depthSides * desc.texelBytes;
         }
     }
     return bytes;
@@ -45,7 +45,7 @@ static GpuImage makeVolume(GpuContext& context, const VoxelVolumeDesc& volume) {
     ImageDesc desc;
     desc.type = VK_IMAGE_TYPE_3D;
     desc.format = volume.format;
-    desc.extent = {volume.side, volume.side, volume.side};
+    desc.extent = {volume.side, volume.side, volume.side * volume.depthSides};
     desc.mipLevels = volume.mipLevels;
     // Written by storage, read by samplers, cleared and copied (creation and the tests clear and
     // fill them).
@@ -61,7 +61,7 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     size_t next = 0;
     for (GpuImage* image : {&albedoOpacity, &normal, &emission, &radiance}) *image = makeVolume(context, descs[next++]);
     if (resources.anisotropicVoxels)
-        for (int direction = 0; direction < 6; ++direction) directional.push_back(makeVolume(context, descs[next++]));
+        for (int axis = 0; axis < 3; ++axis) directional.push_back(makeVolume(context, descs[next++]));
     if (resources.bounces != 1) gatheredLight = makeVolume(context, descs[next++]);
     occupiedVoxels = Buffer(context, occupiedListBytes(resolution),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
@@ -94,9 +94,8 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
 }
 
 std::vector<VkImageView> VoxelVolumes::directionalViews() const {
-    std::vector<VkImageView> views(6, radiance.view);
-    for (size_t direction = 0; direction < directional.size(); ++direction)
-        views[direction] = directional[direction].view;
+    std::vector<VkImageView> views(3, radiance.view);
+    for (size_t axis = 0; axis < directional.size(); ++axis) views[axis] = directional[axis].view;
     return views;
 }
 

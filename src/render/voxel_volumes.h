@@ -1,6 +1,6 @@
 // Every 3D image of the voxel data, owned in one place with its format: what the voxelizer writes
 // (albedo and opacity, normal, emission, and the list of occupied voxels), the light injected into
-// it (radiance with its mip chain), the six directional chains of anisotropic voxels and the next
+// it (radiance with its mip chain), the directional chains of anisotropic voxels and the next
 // bounce's target. Each image is cleared and moved to GENERAL once, at creation, and stays there (a
 // copy leaves it for the copy only): the passes order their accesses.
 #pragma once
@@ -19,7 +19,8 @@ struct VoxelVolumeDesc {
     uint32_t texelBytes;
     uint32_t side;  // of level 0
     uint32_t mipLevels;
-    bool sceneVoxels;  // written by the voxelizer (the rest hold light)
+    uint32_t depthSides;  // its depth, in sides: 3 where two directional chains share an image
+    bool sceneVoxels;     // written by the voxelizer (the rest hold light)
 };
 
 // The volumes `resources` call for, in the order VoxelVolumes holds them.
@@ -37,8 +38,12 @@ struct VoxelVolumes {
     GpuImage emission;       // RGBA16F: mean emission (scene units), opacity
     // RGBA16F with the full mip chain: radiance × scale premultiplied by opacity, and opacity.
     GpuImage radiance;
-    // Anisotropic voxels: six chains for rays along +x, −x, +y, −y, +z, −z, from the grid's level 1
-    // down (level 0 is shared); empty when the voxels are isotropic.
+    // Anisotropic voxels: the chains for rays along +x and −x, +y and −y, +z and −z, from the grid's
+    // level 1 down (level 0 is shared), an image per axis; empty when the voxels are isotropic. Each
+    // image is three sides deep: the +axis chain fills its first third along z, the −axis chain its
+    // last, and the empty third between them reads as the space outside the grid (cone_tracing.glsl).
+    // A cone then reads its three chains with three fetches: with an image per direction, lavapipe
+    // fetched from both of an axis's images and kept one (a converged bounce 294 -> 199 ms, README).
     std::vector<GpuImage> directional;
     // RGBA16F (bounces ≠ 1): the light each voxel reflects of what its cones last gathered, scaled
     // as the radiance; the injection adds it for the next bounce.
@@ -49,7 +54,7 @@ struct VoxelVolumes {
     Buffer occupiedVoxels;
     Buffer occupiedDispatch;
 
-    // The six views of the directional array binding (the isotropic volume stands in when the
+    // The three views of the directional array binding (the isotropic volume stands in when the
     // voxels are isotropic; the shaders then never sample it).
     std::vector<VkImageView> directionalViews() const;
     // Every image above that exists, in voxelVolumeDescs() order.

@@ -227,7 +227,7 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
 
 TEST(SpirvReflect, BounceGatherComputeShaderHasTheBindingsItsGlslDeclares) {
     // bounce_gather.comp.glsl: frame, albedo and normal, the gathered light it writes, the radiance
-    // volume, the occupied-voxel list and its count, directional_voxels.glsl's six chains at 12 and
+    // volume, the occupied-voxel list and its count, directional_voxels.glsl's three images at 12 and
     // the sky's image.
     const ShaderReflection gather = reflectFile("bounce_gather.comp");
     EXPECT_EQ(gather.stage, kCompute);
@@ -236,7 +236,7 @@ TEST(SpirvReflect, BounceGatherComputeShaderHasTheBindingsItsGlslDeclares) {
     expected.push_back(binding(0, 9, kCombined, kCompute));
     expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
-    expected.push_back(binding(0, 12, kCombined, kCompute, 6));
+    expected.push_back(binding(0, 12, kCombined, kCompute, 3));
     expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kCompute));  // sky.glsl's environment image
     expectBindings(gather.bindings, expected);
     EXPECT_EQ(gather.pushConstantBytes, 8u);  // uint sliceCount, slicePhase
@@ -249,15 +249,15 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kFragment)};
     for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageBuffer, kFragment));
     for (uint32_t b = 4; b <= 11; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
-    expected.push_back(binding(0, 12, kCombined, kFragment, 6));              // the directional volumes
-    expected.push_back(binding(0, 13, kCombined, kFragment));                 // the reduced diffuse cones
-    expected.push_back(binding(0, 14, kCombined, kFragment));                 // the sun shadow maps' depths
-    expected.push_back(binding(0, 15, kCombined, kFragment));                 // the local shadow maps' depths
-    expected.push_back(binding(0, 16, kCombined, kFragment));                 // the G-buffer's emissive texture colour
-    expected.push_back(binding(0, 17, kStorageBuffer, kFragment));            // the area lights' triangles
-    expected.push_back(binding(0, 18, kCombined, kFragment));                 // their shadow maps
-    expected.push_back(binding(0, 19, kCombined, kFragment));                 // ... and their depths
-    expected.push_back(binding(0, 20, kStorageBuffer, kFragment));            // their GGX table (ltc.h)
+    expected.push_back(binding(0, 12, kCombined, kFragment, 3));    // the directional volumes, an image per axis
+    expected.push_back(binding(0, 13, kCombined, kFragment));       // the reduced diffuse cones
+    expected.push_back(binding(0, 14, kCombined, kFragment));       // the sun shadow maps' depths
+    expected.push_back(binding(0, 15, kCombined, kFragment));       // the local shadow maps' depths
+    expected.push_back(binding(0, 16, kCombined, kFragment));       // the G-buffer's emissive texture colour
+    expected.push_back(binding(0, 17, kStorageBuffer, kFragment));  // the area lights' triangles
+    expected.push_back(binding(0, 18, kCombined, kFragment));       // their shadow maps
+    expected.push_back(binding(0, 19, kCombined, kFragment));       // ... and their depths
+    expected.push_back(binding(0, 20, kStorageBuffer, kFragment));  // their GGX table (ltc.h)
     expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kFragment));  // the environment image
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);

@@ -37,8 +37,9 @@ TEST_F(VoxelVolumesTest, OnlyWhatTheSettingsNeedIsCreated) {
     EXPECT_TRUE(isotropic.directional.empty());
     EXPECT_EQ(isotropic.gatheredLight.image, VK_NULL_HANDLE) << "one bounce needs no second target";
     const VoxelVolumes twoBounces(gpu(), {.voxelResolution = 32, .bounces = 2});
-    EXPECT_EQ(twoBounces.directional.size(), 6u);
+    EXPECT_EQ(twoBounces.directional.size(), 3u) << "an image per axis";
     EXPECT_EQ(twoBounces.directional[0].desc.extent.width, 16u) << "the chains start at the grid's level 1";
+    EXPECT_EQ(twoBounces.directional[0].desc.extent.depth, 48u) << "two chains and the empty third between them";
     EXPECT_NE(twoBounces.gatheredLight.image, VK_NULL_HANDLE);
 }
 
