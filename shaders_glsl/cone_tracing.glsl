@@ -5,6 +5,7 @@
 #ifndef VCT_CONE_TRACING_GLSL
 #define VCT_CONE_TRACING_GLSL
 
+#include "gpu_types.h"
 #include "perpendicular.glsl"
 #include "sky.glsl"
 #include "voxel_grid.h"
@@ -46,6 +47,8 @@ struct ConeResult {
     vec3 radiance;    // gathered radiance, scene units
     float occlusion;  // 0..1, with the distance falloff applied
 };
+
+layout(constant_id = SKIP_EMPTY_SPACE_CONSTANT_ID) const bool SKIP_EMPTY_SPACE = true;
 
 // Marches one cone from `origin` (world) along unit `direction`. The sample footprint grows with
 // distance: diameter = 2·tan(half-aperture)·distance, sampled at mip log2(diameter) unless that
@@ -103,7 +106,6 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     float maxDistance = frame.coneMaxDistance;
     float stopOpacity = frame.coneStopOpacity;
     float falloff = frame.aoFalloff;
-    bool skipEmpty = frame.skipEmptySpace != 0u;
 
     vec3 color = vec3(0.0f);
     float alpha = 0.0f;
@@ -130,7 +132,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
         // skip advances by the march's own steps, so the samples after it fall where the march's
         // would, and skipping changes nothing but the time (a skip of its own length shifted them,
         // and what a cone met by 5 %).
-        if (skipEmpty && lod + 2.0f <= maxLod) {
+        if (SKIP_EMPTY_SPACE && lod + 2.0f <= maxLod) {
             float coarseOpacity = textureLod(voxelRadiance, uvw, lod + 2.0f).a;
             if (coarseOpacity <= 0.0f) {
                 float emptyUntil = distance + 2.0f * exp2(floor(lod));

@@ -78,6 +78,11 @@ const uint USE_AREA_LIGHTS = 128u;
 // The flags the voxels' light depends on (inject.comp.glsl): a change converges it again.
 const uint VOXEL_LIGHT_FLAGS = USE_SHADOWS | USE_AREA_LIGHTS;
 
+// The specialization constant of every shader that traces cones (cone_tracing.glsl): whether a cone
+// skips empty space through the coarse mips. A constant, not a frame constant: lavapipe runs the
+// test and the skip at every step even where it is off.
+#define SKIP_EMPTY_SPACE_CONSTANT_ID 7
+
 // The frame's constants, one uniform block (std140: every member sits at its natural offset, which
 // the C++ side checks with static_asserts).
 struct FrameConstants {
@@ -106,7 +111,7 @@ struct FrameConstants {
     float coneStopOpacity;
     float diffuseCentreWeight;
     uint diffuseConeCount;
-    uint skipEmptySpace;  // 1 = march through empty space with the coarse mips
+    uint unused;          // keeps `environment` on 16 bytes
     uint debugVoxelMip;   // the mip level the voxel debug views show
     uint diffuseDownscale;  // diffuse cones traced once per diffuseDownscale² samples (1 = every sample)
     uint firstAreaLight;  // lights[firstAreaLight, lightCount) are the area lights, after the punctual ones

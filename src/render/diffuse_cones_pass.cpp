@@ -49,7 +49,7 @@ Buffer listHeader(GpuContext& context) {
 }  // namespace
 
 DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, uint32_t samplesHigh, uint32_t downscale)
-    : context_(context), downscale_(downscale) {
+    : traceListPipeline(context, "diffuse_trace_list.comp"), context_(context), downscale_(downscale) {
     const uint32_t reducedWide = (samplesWide + downscale - 1) / downscale;
     const uint32_t reducedHigh = (samplesHigh + downscale - 1) / downscale;
     for (Reduced& frame : reduced)
@@ -72,11 +72,11 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
     reprojectPipeline = createComputePipeline(context, "diffuse_reproject.comp");
     upsamplePipeline = createComputePipeline(context, "diffuse_upsample.comp");
     edgeHistoryPipeline = createComputePipeline(context, "diffuse_edge_history.comp");
-    traceListPipeline = createComputePipeline(context, "diffuse_trace_list.comp");
 }
 
 void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                              const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection) {
+                              const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection,
+                              bool skipEmptySpace) {
     const VkSampler volumeSampler = volumes.sampler.sampler, point = pointSampler.sampler;
     const Reduced& now = reduced[frameCount_ % 2];
     const Reduced& last = reduced[(frameCount_ + 1) % 2];
@@ -116,7 +116,8 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     } const reuse{lastViewProjection_, groupLimit, frameCount_ % kRefreshPeriod, haveHistory_ ? 1u : 0u};
     // Steps 2 and 4: the listed samples' cones, into `target`'s texels, a representative's at its block.
     auto traceListed = [&](const GpuImage& target, uint32_t targetDownscale, const Buffer& listed, const Buffer& list) {
-        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceListPipeline.pipeline);
+        const Pipeline& traceList = traceListPipeline.get(skipEmptySpace);
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList.pipeline);
         DescriptorPush()
             .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -128,8 +129,8 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
             .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceListPipeline.layout);
-        vkCmdPushConstants(commands, traceListPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(targetDownscale),
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList.layout);
+        vkCmdPushConstants(commands, traceList.layout, VK_SHADER_STAGE_ALL, 0, sizeof(targetDownscale),
                            &targetDownscale);
         vkCmdDispatchIndirect(commands, list.buffer, 0);
     };

@@ -9,6 +9,7 @@
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
+#include "render/cone_tracing_pipeline.h"
 #include "render/gbuffer_pass.h"
 #include "render/sky_image.h"
 #include "render/voxel_volumes.h"
@@ -23,7 +24,7 @@ struct DiffuseConesPass {
     // Leaves diffuse() in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
     // `viewProjection` is the G-buffer's: the next frame finds this frame's light through it.
     void record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection);
+                const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection, bool skipEmptySpace);
     // The light the last frames gathered no longer holds (the voxels' light was recomputed, or the
     // cones changed): the next frame traces every block.
     void forgetHistory() { haveHistory_ = false; }
@@ -60,7 +61,8 @@ struct DiffuseConesPass {
     Buffer fallbackList;     // glsl::WorkListHeader over them
     Buffer listHeaders;      // host-visible copies of both headers, for the counts above
     Sampler pointSampler;
-    Pipeline reprojectPipeline, upsamplePipeline, edgeHistoryPipeline, traceListPipeline;
+    Pipeline reprojectPipeline, upsamplePipeline, edgeHistoryPipeline;
+    ConeTracingComputePipeline traceListPipeline;
 
 private:
     GpuContext& context_;

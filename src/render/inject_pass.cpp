@@ -9,7 +9,7 @@ namespace vct {
 InjectPass::InjectPass(GpuContext& context)
     : pipeline(createComputePipeline(context, "inject.comp", {}, {0u})),
       cachedAreaPipeline(createComputePipeline(context, "inject.comp", {}, {1u})),
-      gatherPipeline(createComputePipeline(context, "bounce_gather.comp")),
+      gatherPipeline(context, "bounce_gather.comp"),
       context_(context) {
     forgetAreaLights(0);
 }
@@ -60,7 +60,7 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
 }
 
 void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
-                              const SkyImage& sky, Slice slice, uint32_t occupiedVoxels) {
+                              const SkyImage& sky, Slice slice, uint32_t occupiedVoxels, bool skipEmptySpace) {
     // Sized on the host, not by the list's indirect dispatch: lavapipe runs each workgroup through
     // the whole shader, every loop once, even where no invocation has an item, and a 1/20 slice
     // dispatched over the whole list cost twice its own gather.
@@ -68,7 +68,8 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
     const uint32_t groups = std::min((items + glsl::WORK_LIST_GROUP_SIZE - 1) / glsl::WORK_LIST_GROUP_SIZE,
                                      context_.properties.limits.maxComputeWorkGroupCount[0]);
     if (groups == 0) return;
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.pipeline);
+    const Pipeline& gather = gatherPipeline.get(skipEmptySpace);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather.pipeline);
     const VkSampler sampler = volumes.sampler.sampler;
     DescriptorPush()
         .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -80,8 +81,8 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
         .buffer(11, volumes.occupiedDispatch.buffer)
         .sampledImages(12, volumes.directionalViews(), sampler, VK_IMAGE_LAYOUT_GENERAL)
         .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gatherPipeline.layout);
-    vkCmdPushConstants(commands, gatherPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather.layout);
+    vkCmdPushConstants(commands, gather.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);
     vkCmdDispatch(commands, groups, 1, 1);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);

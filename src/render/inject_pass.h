@@ -5,6 +5,7 @@
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
+#include "render/cone_tracing_pipeline.h"
 #include "render/shadow_pass.h"
 #include "render/sky_image.h"
 #include "render/voxel_volumes.h"
@@ -33,11 +34,11 @@ struct InjectPass {
         uint32_t count = 1, phase = 0;
     };
     void recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
-                      const SkyImage& sky, Slice slice, uint32_t occupiedVoxels);
+                      const SkyImage& sky, Slice slice, uint32_t occupiedVoxels, bool skipEmptySpace);
 
     Pipeline pipeline;            // computes the area lights' part, and keeps it
     Pipeline cachedAreaPipeline;  // reads it
-    Pipeline gatherPipeline;
+    ConeTracingComputePipeline gatherPipeline;
 
 private:
     GpuContext& context_;

@@ -213,7 +213,6 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.coneStopOpacity = shading.coneStopOpacity;
     constants.diffuseCentreWeight = shading.diffuseCentreWeight;
     constants.diffuseConeCount = shading.diffuseConeCount;
-    constants.skipEmptySpace = shading.skipEmptySpace ? 1u : 0u;
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
     constants.environment = glm::vec4(environment_, sky_->mapped() ? 1.0f : 0.0f);
@@ -287,8 +286,8 @@ FrameStats Renderer::renderFrame() {
             // sources alone: the same inputs, the same image.
             run(commands, Pass::Inject, [&] {
                 if (progressive)
-                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, slice,
-                                             occupiedVoxels_);
+                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, slice, occupiedVoxels_,
+                                             skipsEmptySpace());
                 injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_,
                                    progressive);
             });
@@ -316,7 +315,8 @@ FrameStats Renderer::renderFrame() {
         for (uint32_t i = 0; i < more && !(converging && converged); ++i) {
             submit([&](VkCommandBuffer commands) {
                 run(commands, Pass::Bounce, [&] {
-                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {}, occupiedVoxels_);
+                    injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {}, occupiedVoxels_,
+                                             skipsEmptySpace());
                     injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
                     mipsPass_.record(commands, *volumes_);
                     if (converging) recordMeanRadiance(commands);
@@ -329,8 +329,8 @@ FrameStats Renderer::renderFrame() {
     submit([&](VkCommandBuffer commands) {
         run(commands, Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
         run(commands, Pass::DiffuseCones, [&] {
-            diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_, *sky_,
-                                      viewProjection);
+            diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_, *sky_, viewProjection,
+                                      skipsEmptySpace());
         });
         run(commands, Pass::Shade, [&] {
             const bool reducedDiffuse = plan.runs(Pass::DiffuseCones);
@@ -344,6 +344,7 @@ FrameStats Renderer::renderFrame() {
                 .sunShadows = shadowLayout_.sunLayers > 0,
                 .localShadows = shadowLayout_.localLayers > 0,
                 .areaLightSpecular = anySpecularMaterial_,
+                .skipsEmptySpace = skipsEmptySpace(),
             };
             const ShadeInputs inputs{frameConstants_.buffer,
                                      sceneGpu_->materials.buffer,
@@ -364,6 +365,10 @@ FrameStats Renderer::renderFrame() {
     stale_ = afterFrame(stale_, plan, converged);
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
+}
+
+bool Renderer::skipsEmptySpace() const {
+    return settings_.shading.skipEmptySpace.value_or(!context_.isSoftwareRasterizer());
 }
 
 void Renderer::recordOccupiedCount(VkCommandBuffer commands) {

@@ -100,6 +100,8 @@ private:
     // commands ran, whether it moved by less than kBounceTolerance since the last time.
     void recordMeanRadiance(VkCommandBuffer commands);
     // Copies the occupied list's header to occupiedHeader_: its count sizes the progressive slices.
+    // The shading settings' empty-space skipping, or the device's default (settings.h).
+    bool skipsEmptySpace() const;
     void recordOccupiedCount(VkCommandBuffer commands);
     bool meanRadianceSettled();
 

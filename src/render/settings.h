@@ -125,7 +125,9 @@ struct ShadingSettings {
     float coneStartOffset = 1.5f;       // surface to cone apex, in voxels of a 64³ grid (and at least of this one)
     float coneStopOpacity = 0.95f;      // a cone stops once this opaque
     float aoFalloff = 8.0f;             // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
-    bool skipEmptySpace = true;         // march through empty space with the coarse mips
+    // March through empty space with the coarse mips. Unset: on, except on a software rasterizer,
+    // which runs both sides of the test at every step and measured each cone 25 % faster without it.
+    std::optional<bool> skipEmptySpace;
 
     // With converged bounces, one bounce per frame, each fed by the last frame's light, so that a
     // moving light never resets (and pumps) the indirect light: the viewer's choice. Otherwise

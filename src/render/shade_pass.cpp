@@ -1,6 +1,7 @@
 #include "render/shade_pass.h"
 
 #include "gpu/commands.h"
+#include "render/cone_tracing_pipeline.h"
 #include "render/ltc_table.h"
 
 namespace vct {
@@ -25,9 +26,10 @@ const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
     desc.vertexShader = "fullscreen.vert";
     desc.fragmentShader = "shade.frag";
     desc.colorFormats = {radiance.desc.format};
-    desc.fragmentSpecialization = {variant.debugViews,       variant.tracesDiffuseCones, variant.tracesSpecularCone,
-                                   variant.areaLights,       variant.sunShadows,         variant.localShadows,
-                                   variant.areaLightSpecular};
+    desc.fragmentSpecialization = coneTracingSpecialization(
+        variant.skipsEmptySpace,
+        {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone, variant.areaLights,
+         variant.sunShadows, variant.localShadows, variant.areaLightSpecular});
     slot = createGraphicsPipeline(context_, desc);
     return slot;
 }

@@ -23,10 +23,11 @@ struct ShadeVariant {
     bool sunShadows = true;           // some sun casts shadows (has a shadow map)
     bool localShadows = true;         // some spot or point light does
     bool areaLightSpecular = true;    // some material reflects specularly (the area lights' highlights)
+    bool skipsEmptySpace = true;      // the cones skip empty space (cone_tracing_pipeline.h)
     uint32_t index() const {
         return (debugViews ? 1u : 0u) | (tracesDiffuseCones ? 2u : 0u) | (tracesSpecularCone ? 4u : 0u) |
                (areaLights ? 8u : 0u) | (sunShadows ? 16u : 0u) | (localShadows ? 32u : 0u) |
-               (areaLightSpecular ? 64u : 0u);
+               (areaLightSpecular ? 64u : 0u) | (skipsEmptySpace ? 128u : 0u);
     }
 };
 
@@ -54,7 +55,7 @@ struct ShadePass {
 private:
     // Built the first time a frame asks for its variant.
     const Pipeline& pipeline(const ShadeVariant& variant);
-    std::array<Pipeline, 128> pipelines_;
+    std::array<Pipeline, 256> pipelines_;
     GpuContext& context_;
 };
 

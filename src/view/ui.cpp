@@ -160,7 +160,8 @@ static void coneSection(RenderSettings& settings) {
     ImGui::SliderFloat("start offset", &settings.shading.coneStartOffset, 0.0f, 4.0f, "%.2f voxels");
     ImGui::SliderFloat("stop opacity", &settings.shading.coneStopOpacity, 0.5f, 1.0f);
     ImGui::SliderFloat("AO falloff", &settings.shading.aoFalloff, 0.0f, 32.0f);
-    ImGui::Checkbox("skip empty space", &settings.shading.skipEmptySpace);
+    bool skipEmptySpace = settings.shading.skipEmptySpace.value_or(true);  // the viewer resolves it at start
+    if (ImGui::Checkbox("skip empty space", &skipEmptySpace)) settings.shading.skipEmptySpace = skipEmptySpace;
 }
 
 static void resolutionSection(ViewerState& state) {

@@ -12,6 +12,7 @@
 #include "gpu/readback.h"
 #include "gpu_test.h"
 #include "gpu_types.h"
+#include "render/cone_tracing_pipeline.h"
 #include "render/mips_pass.h"
 #include "render/sky_image.h"
 #include "render/voxel_grid_fit.h"
@@ -95,7 +96,6 @@ protected:
         frame.diffuseCentreWeight = 0.25f;
         frame.radianceScale = 1.0f;
         frame.diffuseConeCount = 6;
-        frame.skipEmptySpace = skipEmptySpace ? 1u : 0u;
         frame.anisotropicVoxels = anisotropic ? 1u : 0u;
         return frame;
     }
@@ -108,7 +108,8 @@ protected:
         Buffer probeBuffer(context, probes.size() * sizeof(Probe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         std::memcpy(probeBuffer.mapped, probes.data(), probes.size() * sizeof(Probe));
         Buffer results(context, probes.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-        const Pipeline pipeline = createComputePipeline(context, "cone_probe.comp");
+        const Pipeline pipeline =
+            createComputePipeline(context, "cone_probe.comp", {}, coneTracingSpecialization(skipEmptySpace));
         const SkyImage sky(context, nullptr);  // the uniform sky of frame.environment
         const uint32_t count = uint32_t(probes.size());
         submitAndWait(context, [&](VkCommandBuffer commands) {
