@@ -16,7 +16,9 @@
 // to rays crossing it along its normal stays opaque to every ray that crosses it obliquely (a plain
 // weighted average of the αs let a 50° cone see a tenth of the way through it); each chain's
 // radiance counts by its share of the optical depth.
-vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
+// `blendFinest`: below level 1 the sample blends towards the finest level; a literal at each call
+// (traceCone), so that a march past level 1 does not fetch that level at all.
+vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction, bool blendFinest) {
     if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
     float directionalLod = max(lod - 1.0f, 0.0f);
     vec3 weight = direction * direction;
@@ -40,7 +42,7 @@ vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction) {
         directional = vec4(radiance * alpha, alpha);
     }
     // Below level 1 blend towards the finest (isotropic) level.
-    return lod >= 1.0f ? directional : mix(textureLod(voxelRadiance, uvw, 0.0f), directional, lod);
+    return !blendFinest || lod >= 1.0f ? directional : mix(textureLod(voxelRadiance, uvw, 0.0f), directional, lod);
 }
 
 struct ConeResult {
@@ -97,6 +99,79 @@ float marchStep(float diameter, float lod, float stepFraction) {
     return max(min(stepFraction * diameter, MAX_STEP_TEXELS * exp2(floor(lod))), 0.25f);
 }
 
+// A cone's march so far.
+struct ConeMarch {
+    vec3 color;         // composited front to back, premultiplied
+    float alpha;
+    float occlusion;    // with the distance falloff
+    vec3 lastRadiance;  // radiance (premultiplied ÷ opacity) of the last sample met
+    float distance;     // from the origin, voxels
+    bool leftGrid;      // its footprint left the grid (outside is transparent black)
+};
+
+// What stays the same along a cone.
+struct ConeSetup {
+    vec3 start;  // grid coordinates
+    vec3 direction;
+    float tanHalfAperture, startHeight, heightRate;
+    float stepFraction, maxDistance, falloff, resolution, maxLod;
+};
+
+bool marching(ConeMarch march, ConeSetup cone, float stopOpacity) {
+    return !march.leftGrid && march.distance <= cone.maxDistance && march.alpha < stopOpacity;
+}
+
+// One step of the march: a sample composited, or a stretch of empty space skipped.
+void marchOneStep(inout ConeMarch march, ConeSetup cone, bool blendFinest) {
+    float distance = march.distance;
+    float diameter = max(1.0f, 2.0f * cone.tanHalfAperture * distance);
+    float lod = coneSampleLod(distance, cone.tanHalfAperture, cone.startHeight, cone.heightRate, cone.maxLod);
+    vec3 position = cone.start + cone.direction * distance;
+    // Stop once the footprint has left the grid (outside is transparent black): a cone that
+    // stopped when its centre left would skip a wall lying in the grid's last voxels.
+    if (any(lessThan(position, vec3(-0.5f * diameter))) ||
+        any(greaterThan(position, vec3(cone.resolution + 0.5f * diameter)))) {
+        march.leftGrid = true;
+        return;
+    }
+    vec3 uvw = position / cone.resolution;
+    float stepLength = marchStep(diameter, lod, cone.stepFraction);
+    // Empty space: when a level two steps coarser holds nothing here, no finer level does
+    // either (its texels are averages), so the cone can skip ahead without sampling. A zero
+    // from trilinear filtering vouches for the texels around the sample of the finer of the
+    // two levels it blends, so for half such a texel: 2 texels of floor(lod). (Two diameters,
+    // as before, overshot that where the self-clearance keeps `lod` below the diameter.) The
+    // skip advances by the march's own steps, so the samples after it fall where the march's
+    // would, and skipping changes nothing but the time (a skip of its own length shifted them,
+    // and what a cone met by 5 %).
+    if (SKIP_EMPTY_SPACE && lod + 2.0f <= cone.maxLod) {
+        float coarseOpacity = textureLod(voxelRadiance, uvw, lod + 2.0f).a;
+        if (coarseOpacity <= 0.0f) {
+            float emptyUntil = distance + 2.0f * exp2(floor(lod));
+            for (int s = 0; s < 16 && distance < emptyUntil && distance <= cone.maxDistance; ++s) {
+                float skippedDiameter = max(1.0f, 2.0f * cone.tanHalfAperture * distance);
+                float skippedLod =
+                coneSampleLod(distance, cone.tanHalfAperture, cone.startHeight, cone.heightRate, cone.maxLod);
+                distance =
+                nextDistance(distance, marchStep(skippedDiameter, skippedLod, cone.stepFraction), cone.maxDistance);
+            }
+            march.distance = distance;
+            return;
+        }
+    }
+
+    vec4 voxel = sampleVoxels(uvw, lod, cone.direction, blendFinest);
+    if (voxel.a > 0.0f) {
+        float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / exp2(lod));
+        vec3 correctedColor = voxel.rgb * (correctedAlpha / voxel.a);
+        march.color += (1.0f - march.alpha) * correctedColor;
+        march.occlusion += (1.0f - march.occlusion) * correctedAlpha / (1.0f + cone.falloff * distance);
+        march.alpha += (1.0f - march.alpha) * correctedAlpha;
+        march.lastRadiance = voxel.rgb / voxel.a;
+    }
+    march.distance = nextDistance(distance, stepLength, cone.maxDistance);
+}
+
 ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float startHeight, float heightRate) {
     VoxelGridParams grid = frame.grid;
     float resolution = float(grid.resolution.x);
@@ -107,55 +182,25 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     float stopOpacity = frame.coneStopOpacity;
     float falloff = frame.aoFalloff;
 
-    vec3 color = vec3(0.0f);
-    float alpha = 0.0f;
-    float occlusion = 0.0f;
-    vec3 lastRadiance = vec3(0.0f);  // radiance (premultiplied ÷ opacity) of the last sample met
-    float distance = 0.5f;  // the origin is already offset from the surface
-    for (int i = 0; i < 512 && distance <= maxDistance && alpha < stopOpacity; ++i) {
-        float diameter = max(1.0f, 2.0f * tanHalfAperture * distance);
-        float lod = coneSampleLod(distance, tanHalfAperture, startHeight, heightRate, maxLod);
-        vec3 position = start + direction * distance;
-        // Stop once the footprint has left the grid (outside is transparent black): a cone that
-        // stopped when its centre left would skip a wall lying in the grid's last voxels.
-        if (any(lessThan(position, vec3(-0.5f * diameter))) ||
-            any(greaterThan(position, vec3(resolution + 0.5f * diameter))))
-            break;
-        vec3 uvw = position / resolution;
-        float stepLength = marchStep(diameter, lod, stepFraction);
-
-        // Empty space: when a level two steps coarser holds nothing here, no finer level does
-        // either (its texels are averages), so the cone can skip ahead without sampling. A zero
-        // from trilinear filtering vouches for the texels around the sample of the finer of the
-        // two levels it blends, so for half such a texel: 2 texels of floor(lod). (Two diameters,
-        // as before, overshot that where the self-clearance keeps `lod` below the diameter.) The
-        // skip advances by the march's own steps, so the samples after it fall where the march's
-        // would, and skipping changes nothing but the time (a skip of its own length shifted them,
-        // and what a cone met by 5 %).
-        if (SKIP_EMPTY_SPACE && lod + 2.0f <= maxLod) {
-            float coarseOpacity = textureLod(voxelRadiance, uvw, lod + 2.0f).a;
-            if (coarseOpacity <= 0.0f) {
-                float emptyUntil = distance + 2.0f * exp2(floor(lod));
-                for (int s = 0; s < 16 && distance < emptyUntil && distance <= maxDistance; ++s) {
-                    float skippedDiameter = max(1.0f, 2.0f * tanHalfAperture * distance);
-                    float skippedLod = coneSampleLod(distance, tanHalfAperture, startHeight, heightRate, maxLod);
-                    distance = nextDistance(distance, marchStep(skippedDiameter, skippedLod, stepFraction), maxDistance);
-                }
-                continue;
-            }
-        }
-
-        vec4 voxel = sampleVoxels(uvw, lod, direction);
-        if (voxel.a > 0.0f) {
-            float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / exp2(lod));
-            vec3 correctedColor = voxel.rgb * (correctedAlpha / voxel.a);
-            color += (1.0f - alpha) * correctedColor;
-            occlusion += (1.0f - occlusion) * correctedAlpha / (1.0f + falloff * distance);
-            alpha += (1.0f - alpha) * correctedAlpha;
-            lastRadiance = voxel.rgb / voxel.a;
-        }
-        distance = nextDistance(distance, stepLength, maxDistance);
-    }
+    ConeMarch march = ConeMarch(vec3(0.0f), 0.0f, 0.0f, vec3(0.0f), 0.5f, false);
+    ConeSetup cone = ConeSetup(start, direction, tanHalfAperture, startHeight, heightRate, stepFraction, maxDistance,
+                               falloff, resolution, maxLod);
+    // Near its apex a cone samples below level 1, blending in the finest level; its level only grows
+    // along it where it leaves its surface (heightRate >= 0), so past level 1 the rest of the march
+    // never blends it. Two loops, since lavapipe runs both sides of a choice: one loop fetched the
+    // finest level at every step.
+    bool levelGrows = heightRate >= 0.0f;
+    int steps = 0;
+    for (; steps < 512 && marching(march, cone, stopOpacity) &&
+           (!levelGrows || coneSampleLod(march.distance, tanHalfAperture, startHeight, heightRate, maxLod) < 1.0f);
+         ++steps)
+        marchOneStep(march, cone, true);
+    for (; steps < 512 && marching(march, cone, stopOpacity); ++steps) marchOneStep(march, cone, false);
+    vec3 color = march.color;
+    float alpha = march.alpha;
+    float occlusion = march.occlusion;
+    vec3 lastRadiance = march.lastRadiance;
+    float distance = march.distance;
     // Stopped because it is nearly opaque: what the last few percent would have met lies behind
     // the surface it stopped in, so the remainder takes that surface's light instead of none (a
     // closed room would otherwise lose 1 - stopOpacity of every bounce).
