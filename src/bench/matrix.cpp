@@ -109,6 +109,7 @@ std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {
         variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}, 1, 2),
         variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeAperture = 40.0f}, 1, 4),
         variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeCount = 1, .coneStep = 1.0f}, 1, 2),
+        variant({.voxelResolution = 32, .sunShadowMapSize = sun}, {.diffuseConeCount = 1, .coneStep = 1.0f}, 1, 4),
         variant({.voxelResolution = 64, .sunShadowMapSize = 4096}, {.diffuseConeAperture = 40.0f}, 2),
     };
     std::vector<BenchSetting> matrix;

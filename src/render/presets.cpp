@@ -11,12 +11,14 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     // the surfaces) cost a fraction and measured no worse than tracing every sample: what they
     // smooth away is mostly the voxels' own pattern.
 
-    // One 60° cone along the normal at 32³ with long steps: the viewer's start on a software
-    // rasterizer (a 960×540 frame of the Cornell box in about 90 ms on lavapipe).
+    // Six 60° cones at 32³ stepping a whole diameter: the viewer's start on a software rasterizer (a
+    // 960×540 window moving through the Cornell box at render scale 0.5: 65 ms a frame on lavapipe,
+    // 2 cores, where one cone along the normal took 53 ms for three times the error: full relMSE
+    // 0.085 against 0.248 over the built-in scenes).
     const RenderSettings fast{
         .image = {.supersample = 1, .diffuseDownscale = 4},
         .resources = {.voxelResolution = 32, .sunShadowMapSize = 2048},
-        .shading = {.diffuseConeCount = 1, .diffuseConeAperture = 60.0f, .coneStep = 1.0f},
+        .shading = {.diffuseConeCount = 6, .diffuseConeAperture = 60.0f, .coneStep = 1.0f},
     };
 
     // 6 cones of 40° at 64³, with a 2048² sun shadow map: at 128×128 it measured as accurate as

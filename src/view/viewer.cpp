@@ -157,14 +157,14 @@ Viewer::Viewer(ViewerOptions options)
     surface_ = std::make_unique<Surface>(*context_, window_.handle);
 
     // On a software rasterizer the viewer starts on the `fast` preset at half the image area's size,
-    // and says so: a 960×540 window moving through the Cornell box drew a frame in 43-49 ms (20-23
-    // fps) on lavapipe, 2 cores, where the full size took 130 ms (8 fps).
+    // and says so: a 960×540 window moving through the Cornell box drew a frame in 58-65 ms (15-17
+    // fps) on lavapipe, 2 cores.
     const bool software = context_->isSoftwareRasterizer();
     const bool softwarePreset = software && options_.softwareSettings.has_value();
     state_.settings = softwarePreset ? *options_.softwareSettings : options_.settings;
     if (softwarePreset)
         state_.notice = "a software rasterizer (" + context_->deviceName() +
-                        "): started on the fast preset at render scale 0.5, about 20 fps at 960x540; change them above";
+                        "): started on the fast preset at render scale 0.5, about 15 fps at 960x540; change them above";
     // The panel shows what the renderer does (settings.h).
     if (!state_.settings.shading.skipEmptySpace) state_.settings.shading.skipEmptySpace = !software;
     state_.exposure = options_.exposure;
