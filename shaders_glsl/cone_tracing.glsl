@@ -151,9 +151,9 @@ void marchOneStep(inout ConeMarch march, ConeSetup cone, bool blendFinest) {
             for (int s = 0; s < 16 && distance < emptyUntil && distance <= cone.maxDistance; ++s) {
                 float skippedDiameter = max(1.0f, 2.0f * cone.tanHalfAperture * distance);
                 float skippedLod =
-                coneSampleLod(distance, cone.tanHalfAperture, cone.startHeight, cone.heightRate, cone.maxLod);
-                distance =
-                nextDistance(distance, marchStep(skippedDiameter, skippedLod, cone.stepFraction), cone.maxDistance);
+                    coneSampleLod(distance, cone.tanHalfAperture, cone.startHeight, cone.heightRate, cone.maxLod);
+                distance = nextDistance(distance, marchStep(skippedDiameter, skippedLod, cone.stepFraction),
+                                        cone.maxDistance);
             }
             march.distance = distance;
             return;
@@ -174,17 +174,12 @@ void marchOneStep(inout ConeMarch march, ConeSetup cone, bool blendFinest) {
 
 ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float startHeight, float heightRate) {
     VoxelGridParams grid = frame.grid;
-    float resolution = float(grid.resolution.x);
     float maxLod = float(grid.resolution.y - 1u);
-    vec3 start = worldToGrid(grid, origin);
-    float stepFraction = frame.coneStep;
-    float maxDistance = frame.coneMaxDistance;
     float stopOpacity = frame.coneStopOpacity;
-    float falloff = frame.aoFalloff;
-
+    ConeSetup cone = ConeSetup(worldToGrid(grid, origin), direction, tanHalfAperture, startHeight, heightRate,
+                               frame.coneStep, frame.coneMaxDistance, frame.aoFalloff, float(grid.resolution.x), maxLod);
+    // The origin is already offset from the surface.
     ConeMarch march = ConeMarch(vec3(0.0f), 0.0f, 0.0f, vec3(0.0f), 0.5f, false);
-    ConeSetup cone = ConeSetup(start, direction, tanHalfAperture, startHeight, heightRate, stepFraction, maxDistance,
-                               falloff, resolution, maxLod);
     // Near its apex a cone samples below level 1, blending in the finest level; its level only grows
     // along it where it leaves its surface (heightRate >= 0), so past level 1 the rest of the march
     // never blends it. Two loops, since lavapipe runs both sides of a choice: one loop fetched the
@@ -196,25 +191,20 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
          ++steps)
         marchOneStep(march, cone, true);
     for (; steps < 512 && marching(march, cone, stopOpacity); ++steps) marchOneStep(march, cone, false);
-    vec3 color = march.color;
-    float alpha = march.alpha;
-    float occlusion = march.occlusion;
-    vec3 lastRadiance = march.lastRadiance;
-    float distance = march.distance;
     // Stopped because it is nearly opaque: what the last few percent would have met lies behind
     // the surface it stopped in, so the remainder takes that surface's light instead of none (a
     // closed room would otherwise lose 1 - stopOpacity of every bounce).
-    if (alpha >= stopOpacity) {
-        color += (1.0f - alpha) * lastRadiance;
-        occlusion += (1.0f - occlusion) / (1.0f + falloff * distance);
+    if (march.alpha >= stopOpacity) {
+        march.color += (1.0f - march.alpha) * march.lastRadiance;
+        march.occlusion += (1.0f - march.occlusion) / (1.0f + cone.falloff * march.distance);
     }
     ConeResult result;
-    result.radiance = color / frame.radianceScale;
+    result.radiance = march.color / frame.radianceScale;
     // What the cone did not meet, having left the grid or gone its maximum distance, it meets in
     // the sky (a cone the maximum distance cuts short inside a room sees the sky through its walls:
     // the distance is a setting for open scenes).
-    if (alpha < stopOpacity) result.radiance += (1.0f - alpha) * skyRadiance(direction, tanHalfAperture);
-    result.occlusion = clamp(occlusion, 0.0f, 1.0f);
+    if (march.alpha < stopOpacity) result.radiance += (1.0f - march.alpha) * skyRadiance(direction, tanHalfAperture);
+    result.occlusion = clamp(march.occlusion, 0.0f, 1.0f);
     return result;
 }
 
