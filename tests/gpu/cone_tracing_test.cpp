@@ -334,6 +334,25 @@ TEST_F(ConeTracing, AConeMeetsAWallAtItsMaximumDistance) {
         EXPECT_GT(results[i].a, 0.75f) << "maximum distance " << 56.0f + 0.25f * float(i) << ": the wall was missed";
 }
 
+// The two directional chains of an axis share one image, the −z chain two thirds of the way along
+// its z (directional_chains.h). A wide cone marching out through the grid's +z face, its footprint
+// still overlapping the grid, samples far past the face; unclamped, its coarse samples there
+// reached through the empty third into the −z chain and saw a wall that lies behind it.
+TEST_F(ConeTracing, AConeLeavingThroughAFaceSeesNothingOfTheOtherDirectionsChain) {
+    for (int x = 0; x < int(kResolution); ++x)
+        for (int y = 0; y < int(kResolution); ++y) {
+            voxel(x, y, 0) = glm::vec4(1, 1, 1, 1);  // a lit wall at the −z face, facing +z
+            normalAt(x, y, 0) = glm::vec4(0, 0, 1, 0);
+        }
+    buildVolume();
+    // Along +z the wall is seen from behind (transparent), and nothing else is there.
+    const std::vector<glm::vec4> away = trace({{glm::vec4(32, 32, 60, 0), glm::vec4(0, 0, 1, 2.0f)}});
+    EXPECT_LT(glm::length(glm::vec3(away[0])), 1e-4f) << "a cone along +z met the wall behind it";
+    // The wall is there for a cone that faces it: the test would pass on an empty volume otherwise.
+    const std::vector<glm::vec4> towards = trace({{glm::vec4(32, 32, 30, 0), glm::vec4(0, 0, -1, 0.3f)}});
+    EXPECT_GT(towards[0].r, 0.5f);
+}
+
 // Cones leaving a floor towards a wall: what they gather changes smoothly as their origin slides
 // along the floor. Near their surface the cones sample levels finer than their footprint (the
 // self-clearance); steps as long as the footprint then skipped whole texels, so the one-voxel wall
