@@ -114,11 +114,11 @@ struct ConeSetup {
     vec3 start;  // grid coordinates
     vec3 direction;
     float tanHalfAperture, startHeight, heightRate;
-    float stepFraction, maxDistance, falloff, resolution, maxLod;
+    float stepFraction, maxDistance, stopOpacity, falloff, resolution, maxLod;
 };
 
-bool marching(ConeMarch march, ConeSetup cone, float stopOpacity) {
-    return !march.leftGrid && march.distance <= cone.maxDistance && march.alpha < stopOpacity;
+bool marching(ConeMarch march, ConeSetup cone) {
+    return !march.leftGrid && march.distance <= cone.maxDistance && march.alpha < cone.stopOpacity;
 }
 
 // One step of the march: a sample composited, or a stretch of empty space skipped.
@@ -174,10 +174,9 @@ void marchOneStep(inout ConeMarch march, ConeSetup cone, bool blendFinest) {
 
 ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float startHeight, float heightRate) {
     VoxelGridParams grid = frame.grid;
-    float maxLod = float(grid.resolution.y - 1u);
-    float stopOpacity = frame.coneStopOpacity;
     ConeSetup cone = ConeSetup(worldToGrid(grid, origin), direction, tanHalfAperture, startHeight, heightRate,
-                               frame.coneStep, frame.coneMaxDistance, frame.aoFalloff, float(grid.resolution.x), maxLod);
+                               frame.coneStep, frame.coneMaxDistance, frame.coneStopOpacity, frame.aoFalloff,
+                               float(grid.resolution.x), float(grid.resolution.y - 1u));
     // The origin is already offset from the surface.
     ConeMarch march = ConeMarch(vec3(0.0f), 0.0f, 0.0f, vec3(0.0f), 0.5f, false);
     // Near its apex a cone samples below level 1, blending in the finest level; its level only grows
@@ -186,15 +185,15 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     // finest level at every step.
     bool levelGrows = heightRate >= 0.0f;
     int steps = 0;
-    for (; steps < 512 && marching(march, cone, stopOpacity) &&
-           (!levelGrows || coneSampleLod(march.distance, tanHalfAperture, startHeight, heightRate, maxLod) < 1.0f);
+    for (; steps < 512 && marching(march, cone) &&
+           (!levelGrows || coneSampleLod(march.distance, tanHalfAperture, startHeight, heightRate, cone.maxLod) < 1.0f);
          ++steps)
         marchOneStep(march, cone, true);
-    for (; steps < 512 && marching(march, cone, stopOpacity); ++steps) marchOneStep(march, cone, false);
+    for (; steps < 512 && marching(march, cone); ++steps) marchOneStep(march, cone, false);
     // Stopped because it is nearly opaque: what the last few percent would have met lies behind
     // the surface it stopped in, so the remainder takes that surface's light instead of none (a
     // closed room would otherwise lose 1 - stopOpacity of every bounce).
-    if (march.alpha >= stopOpacity) {
+    if (march.alpha >= cone.stopOpacity) {
         march.color += (1.0f - march.alpha) * march.lastRadiance;
         march.occlusion += (1.0f - march.occlusion) / (1.0f + cone.falloff * march.distance);
     }
@@ -203,7 +202,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     // What the cone did not meet, having left the grid or gone its maximum distance, it meets in
     // the sky (a cone the maximum distance cuts short inside a room sees the sky through its walls:
     // the distance is a setting for open scenes).
-    if (march.alpha < stopOpacity) result.radiance += (1.0f - march.alpha) * skyRadiance(direction, tanHalfAperture);
+    if (march.alpha < cone.stopOpacity) result.radiance += (1.0f - march.alpha) * skyRadiance(direction, tanHalfAperture);
     result.occlusion = clamp(march.occlusion, 0.0f, 1.0f);
     return result;
 }

@@ -368,7 +368,7 @@ FrameStats Renderer::renderFrame() {
 }
 
 bool Renderer::skipsEmptySpace() const {
-    return settings_.shading.skipEmptySpace.value_or(!context_.isSoftwareRasterizer());
+    return vct::skipsEmptySpace(settings_.shading, context_.isSoftwareRasterizer());
 }
 
 void Renderer::recordOccupiedCount(VkCommandBuffer commands) {

@@ -153,6 +153,12 @@ struct RenderSettings {
 // The components a mode shows (toggles switched off stay off).
 Components effectiveComponents(const ShadingSettings& shading);
 
+// Whether the cones skip empty space: the setting, or its default on the device (on, but not on a
+// software rasterizer).
+inline bool skipsEmptySpace(const ShadingSettings& shading, bool softwareRasterizer) {
+    return shading.skipEmptySpace.value_or(!softwareRasterizer);
+}
+
 // One bounce per frame (progressiveBounces honoured: only converging light can be progressive).
 inline bool bouncesProgressively(const RenderSettings& settings) {
     return settings.resources.bounces == kConvergedBounces && settings.shading.progressiveBounces;

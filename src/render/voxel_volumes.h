@@ -41,7 +41,7 @@ struct VoxelVolumes {
     // Anisotropic voxels: the chains for rays along +x and −x, +y and −y, +z and −z, from the grid's
     // level 1 down (level 0 is shared), an image per axis; empty when the voxels are isotropic. Each
     // image is three sides deep: the +axis chain fills its first third along z, the −axis chain its
-    // last, and the empty third between them reads as the space outside the grid (cone_tracing.glsl).
+    // last, and the empty third between them reads as the space outside the grid (directional_chains.h).
     // A cone then reads its three chains with three fetches: with an image per direction, lavapipe
     // fetched from both of an axis's images and kept one (a converged bounce 294 -> 199 ms, README).
     std::vector<GpuImage> directional;

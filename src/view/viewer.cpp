@@ -166,7 +166,7 @@ Viewer::Viewer(ViewerOptions options)
         state_.notice = "a software rasterizer (" + context_->deviceName() +
                         "): started on the fast preset at render scale 0.5, about 15 fps at 960x540; change them above";
     // The panel shows what the renderer does (settings.h).
-    if (!state_.settings.shading.skipEmptySpace) state_.settings.shading.skipEmptySpace = !software;
+    state_.settings.shading.skipEmptySpace = skipsEmptySpace(state_.settings.shading, software);
     state_.exposure = options_.exposure;
     state_.vsync = shownVsync_ = options_.vsync;
     state_.showHint = options_.showHint;
