@@ -4,8 +4,9 @@
 //                  (1 for opaque ones, voxelize.h), at least 1/255 where any triangle touched (so an
 //                  occupied voxel never reads as empty), else 0.
 //   normal: xyz the mean of the touching triangles' unit normals, deliberately not renormalized (its
-//           length says how much they agree: the two faces of a thin wall cancel to ~0); w the
-//           triangle count, clamped to the largest half float.
+//           length says how much they agree: the two faces of a thin wall cancel to ~0); w where the
+//           surface lies, in voxels from the centre along the unit mean normal (the mean way to the
+//           triangles' planes projected on it; 0 where the normals cancel).
 //   emission: mean emitted radiance of the emitting triangles (scene units), clamped to the largest
 //             half float; a = opacity.
 // It also lists the occupied voxels (voxel_grid.h), and zeroes level 0 of the light volumes where a
@@ -18,7 +19,7 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(std430, set = 0, binding = 0) readonly buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
 layout(set = 0, binding = 1, rgba8) uniform writeonly image3D albedoOpacity;
-layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D normalCount;
+layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D normalSurface;
 layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D emission;
 layout(std430, set = 0, binding = 4) writeonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
 layout(std430, set = 0, binding = 5) buffer Occupied { WorkListHeader occupied; };
@@ -43,7 +44,7 @@ void main() {
     ivec3 texel = ivec3(voxel);
     if (count == 0u) {
         imageStore(albedoOpacity, texel, vec4(0.0f));
-        imageStore(normalCount, texel, vec4(0.0f));
+        imageStore(normalSurface, texel, vec4(0.0f));
         imageStore(emission, texel, vec4(0.0f));
         for (int volume = 0; volume < 2; ++volume) imageStore(lightVolumes[volume], texel, vec4(0.0f));
         return;
@@ -54,13 +55,16 @@ void main() {
     float n = float(count);
     vec3 albedo = channelMean(ACCUM_ALBEDO, index, n * ALBEDO_FIXED_SCALE, false);
     vec3 normal = channelMean(ACCUM_NORMAL, index, n * NORMAL_FIXED_SCALE, true);
-    uint emitters = accumulation[ACCUM_EMITTERS].values[index];
+    uint emitters = params.emission.x > 0.0f ? accumulation[ACCUM_EMITTERS].values[index] : 0u;
     vec3 radiance = emitters == 0u ? vec3(0.0f)
                                    : channelMean(ACCUM_EMISSION, index, float(emitters), false) * params.emission.y;
     float opacity = params.dispatch.z == 0u
                         ? 1.0f
                         : max(float(accumulation[ACCUM_OPACITY].values[index]) / OPACITY_FIXED_SCALE, 1.0f / 255.0f);
     imageStore(albedoOpacity, texel, vec4(albedo, opacity));
-    imageStore(normalCount, texel, vec4(normal, min(n, HALF_FLOAT_MAX)));
+    vec3 toSurface = channelMean(ACCUM_SURFACE, index, n * SURFACE_FIXED_SCALE, true);
+    float normalLength = length(normal);
+    float offset = normalLength > SURFACE_NORMAL_MIN ? dot(normal, toSurface) / normalLength : 0.0f;
+    imageStore(normalSurface, texel, vec4(normal, offset));
     imageStore(emission, texel, vec4(min(radiance, vec3(HALF_FLOAT_MAX)), opacity));
 }

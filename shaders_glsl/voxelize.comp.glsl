@@ -91,7 +91,9 @@ void main() {
     GpuMaterial material = materials[triangleMaterials[triangle]];
     float coverage = clamp(material.voxelEmission.w, 0.0f, 1.0f);
     if (!(coverage > 0.0f)) return;
-    bool emits = max(material.voxelEmission.r, max(material.voxelEmission.g, material.voxelEmission.b)) > 0.0f;
+    // Without emitters in the scene (emission scale 0) the emission channels are one word each.
+    bool emits = params.emission.x > 0.0f &&
+                 max(material.voxelEmission.r, max(material.voxelEmission.g, material.voxelEmission.b)) > 0.0f;
     vec3 albedo = material.baseColorFactor.rgb;
     vec3 emission = emits ? material.emission.rgb : vec3(0.0f);
     if (material.baseColorTexture >= 0 || (emits && material.emissiveTexture >= 0)) {
@@ -122,6 +124,8 @@ void main() {
     albedo = clamp(albedo, 0.0f, 1.0f);
     emission = clamp(emission * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
     vec3 normal = unitNormal(a, b, c);
+    // The same whichever way the normal points: the two faces of a thin wall agree on it.
+    vec3 toPlane = normal * dot(normal, a - (vec3(voxel) + 0.5f));
     uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);
     atomicAdd(accumulation[ACCUM_COUNT].values[index], 1u);
     if (params.dispatch.z != 0u)
@@ -129,6 +133,7 @@ void main() {
     for (uint i = 0u; i < 3u; ++i) {
         atomicAdd(accumulation[ACCUM_ALBEDO + i].values[index], toFixed(albedo[i], ALBEDO_FIXED_SCALE));
         atomicAdd(accumulation[ACCUM_NORMAL + i].values[index], toFixed(normal[i], NORMAL_FIXED_SCALE));
+        atomicAdd(accumulation[ACCUM_SURFACE + i].values[index], toFixed(toPlane[i], SURFACE_FIXED_SCALE));
     }
     if (emits) {
         atomicAdd(accumulation[ACCUM_EMITTERS].values[index], 1u);

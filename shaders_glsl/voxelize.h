@@ -12,6 +12,10 @@
 // voxels with the ceiling, and averaging over both would halve its light in the voxels. Opacity and
 // albedo come from every triangle.
 //
+// Where the surface lies. A triangle touches the voxel anywhere within it, and a voxel's light is
+// the light falling on its surface, not on its centre: each triangle adds the way from the centre to
+// the nearest point of its plane, n·(n·(a − centre)), the same for either side of a thin wall.
+//
 // Coverage (glTF alphaMode). A material's voxelCoverage (material_textures.h, GpuMaterial::
 // voxelEmission.w) is the share of its surface that is there: a voxel's opacity is the largest
 // coverage of the triangles touching it (a surface cut into many triangles covers a voxel no more
@@ -44,15 +48,23 @@ const uint VOXELIZE_TILE = 4u;  // a work item covers VOXELIZE_TILE³ voxels
 const uint ACCUM_COUNT = 0u;     // triangles touching the voxel
 const uint ACCUM_ALBEDO = 1u;    // 3 channels, rgb × ALBEDO_FIXED_SCALE
 const uint ACCUM_NORMAL = 4u;    // 3 channels, xyz × NORMAL_FIXED_SCALE (two's complement)
-const uint ACCUM_EMISSION = 7u;  // 3 channels, rgb × VoxelizeParams.emission.x, emitting triangles only
+// Emission, kept only for a scene with emitters (VoxelizeParams.emission.x > 0), else one word each:
+const uint ACCUM_EMISSION = 7u;   // 3 channels, rgb × VoxelizeParams.emission.x, emitting triangles only
 const uint ACCUM_EMITTERS = 10u;  // emitting triangles touching the voxel
 // The largest coverage × OPACITY_FIXED_SCALE of the touching triangles; kept only for a scene with
 // MASK or BLEND materials (VoxelizeParams.dispatch.z = 1), else one word, never read: opacity is 1.
 const uint ACCUM_OPACITY = 11u;
-const uint ACCUM_CHANNELS = 12u;
+// 3 channels, xyz × SURFACE_FIXED_SCALE (two's complement): the way from the voxel's centre to the
+// nearest point of each touching triangle's plane, in voxels (at most √3/2 long).
+const uint ACCUM_SURFACE = 12u;
+const uint ACCUM_CHANNELS = 15u;
 
 const float ALBEDO_FIXED_SCALE = 32768.0f;
 const float NORMAL_FIXED_SCALE = 16384.0f;
+const float SURFACE_FIXED_SCALE = 16384.0f;
+// A mean normal shorter than this (the faces of a thin wall cancelling) gives the surface no
+// direction to lie along: its offset is 0. Far above the fixed point's rounding (2^-14).
+const float SURFACE_NORMAL_MIN = 1.0f / 64.0f;
 const float OPACITY_FIXED_SCALE = 32768.0f;  // coverage in [0, 1]; atomicMax, so no sum to overflow
 const float EMISSION_FIXED_MAX = 32768.0f;     // the scene's largest emission component maps here
 const uint MAX_EXACT_CONTRIBUTIONS = 131071u;  // triangles per voxel before a sum could overflow
@@ -60,7 +72,7 @@ const float HALF_FLOAT_MAX = 65504.0f;
 
 struct VoxelizeParams {
     VoxelGridParams grid;  // resolution.w = work items
-    vec4 emission;         // x fixed-point scale (EMISSION_FIXED_MAX / largest component, 0 if none), y its inverse
+    vec4 emission;         // x fixed-point scale (EMISSION_FIXED_MAX / largest component, 0 without emitters), y its inverse
     uvec4 dispatch;        // x workgroups per row of the voxelize dispatch (work item = group.y · x + group.x),
                            // y the most workgroups the occupied-voxel dispatch may have,
                            // z 1 = the scene has MASK or BLEND materials: ACCUM_OPACITY is kept

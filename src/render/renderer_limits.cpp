@@ -125,7 +125,7 @@ void checkSceneBuffers(const VkPhysicalDeviceLimits& limits, const std::string& 
 RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSettings& settings) {
     RendererMemoryEstimate estimate;
     estimate.voxels = voxelVolumeBytes(settings.resources) +
-                      voxelizeAccumulationBytes(settings.resources.voxelResolution, scene.hasAlphaMaterials());
+                      voxelizeAccumulationBytes(settings.resources.voxelResolution, voxelizeChannels(scene));
 
     const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
     const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;
@@ -161,7 +161,7 @@ void checkRendererLimits(const VkPhysicalDeviceLimits& limits, const VkPhysicalD
     if (settings.image.width == 0 || settings.image.height == 0 || settings.image.supersample == 0)
         throw Error("the image size and supersampling must not be zero");
     checkVoxelResolution(limits, deviceName, settings.resources.voxelResolution);
-    checkVoxelizeMemory(memory, limits, deviceName, settings.resources.voxelResolution, scene.hasAlphaMaterials());
+    checkVoxelizeMemory(memory, limits, deviceName, settings.resources.voxelResolution, voxelizeChannels(scene));
     checkImageSize(limits, deviceName, settings);
     checkShadowMaps(limits, deviceName, scene, settings);
     checkSceneBuffers(limits, deviceName, scene);

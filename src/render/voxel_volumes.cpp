@@ -13,7 +13,7 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
     const VkFormat half = VK_FORMAT_R16G16B16A16_SFLOAT;
     std::vector<VoxelVolumeDesc> descs = {
         {"voxel albedo and opacity", VK_FORMAT_R8G8B8A8_UNORM, 4, side, 1, 1, true},
-        {"voxel normal and count", half, 8, side, 1, 1, true},
+        {"voxel normal and surface offset", half, 8, side, 1, 1, true},
         {"voxel emission", half, 8, side, 1, 1, true},
         {"voxel radiance", half, 8, side, mips, 1, false},
     };
@@ -28,8 +28,8 @@ static uint64_t occupiedListBytes(uint32_t resolution) { return uint64_t(resolut
 
 uint64_t voxelVolumeBytes(const ResourceSettings& resources, bool onlySceneVoxels) {
     // The occupied list is the light passes' work list: it counts with the light, not in the
-    // voxelizer's share of the heap (checkVoxelizeMemory), which a 256³ grid fills exactly on
-    // lavapipe (64 bytes a voxel, half of a 2 GiB heap).
+    // voxelizer's share of the heap (checkVoxelizeMemory): half of lavapipe's 2 GiB heap, which a
+    // 256³ grid of an opaque scene without emitters fills to 60 bytes a voxel of its 64.
     uint64_t bytes = onlySceneVoxels ? 0 : occupiedListBytes(resources.voxelResolution) + sizeof(glsl::WorkListHeader);
     for (const VoxelVolumeDesc& desc : voxelVolumeDescs(resources)) {
         if (onlySceneVoxels && !desc.sceneVoxels) continue;

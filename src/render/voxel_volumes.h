@@ -34,7 +34,7 @@ struct VoxelVolumes {
 
     uint32_t resolution;
     GpuImage albedoOpacity;  // RGBA8 UNORM: mean linear base colour, opacity
-    GpuImage normal;         // RGBA16F: mean unit normal (not renormalized), triangle count
+    GpuImage normal;         // RGBA16F: mean unit normal (not renormalized), surface offset (voxel_resolve.comp)
     GpuImage emission;       // RGBA16F: mean emission (scene units), opacity
     // RGBA16F with the full mip chain: radiance × scale premultiplied by opacity, and opacity.
     GpuImage radiance;

@@ -13,10 +13,13 @@
 namespace vct {
 namespace {
 
-constexpr uint64_t kAccumulationBytesPerVoxel = 4 * glsl::ACCUM_CHANNELS;
-// Without MASK or BLEND materials the opacity channel is one word: an opaque scene needs no more
-// memory than before alphaMode was read (a 256³ grid fills lavapipe's share exactly).
-constexpr uint64_t kOpaqueAccumulationBytesPerVoxel = kAccumulationBytesPerVoxel - 4;
+// Whether a scene needing `channels` keeps a whole buffer for accumulation channel `channel`.
+bool keepsChannel(uint32_t channel, VoxelizeChannels channels) {
+    if (channel == glsl::ACCUM_OPACITY) return channels.opacity;
+    if (channel == glsl::ACCUM_EMITTERS || (channel >= glsl::ACCUM_EMISSION && channel < glsl::ACCUM_EMISSION + 3))
+        return channels.emission;
+    return true;
+}
 
 // Tiles are kept when the triangle's separation from the tile's box is at most this (grid units):
 // far above float rounding (~10⁻⁵ voxel), so a voxel the GPU marks is never in a dropped tile.
@@ -30,30 +33,41 @@ constexpr double kTileSlack = 1e-3;
 constexpr uint64_t kMaxWorkItemBytes = uint64_t(32) << 20;
 uint64_t cube(uint32_t resolution) { return uint64_t(resolution) * resolution * resolution; }
 
-bool gridFits(uint64_t heapBytes, uint64_t maxBufferRange, uint32_t resolution, bool alphaMaterials) {
-    return voxelizeMemoryBytes(resolution, alphaMaterials) <= heapBytes / 2 && cube(resolution) * 4 <= maxBufferRange;
+bool gridFits(uint64_t heapBytes, uint64_t maxBufferRange, uint32_t resolution, VoxelizeChannels channels) {
+    return voxelizeMemoryBytes(resolution, channels) <= heapBytes / 2 && cube(resolution) * 4 <= maxBufferRange;
 }
 
 }  // namespace
 
-uint64_t voxelizeMemoryBytes(uint32_t resolution, bool alphaMaterials) {
-    return voxelizeAccumulationBytes(resolution, alphaMaterials) +
+VoxelizeChannels voxelizeChannels(const Scene& scene) {
+    VoxelizeChannels channels;
+    channels.opacity = scene.hasAlphaMaterials();
+    for (const Material& material : scene.materials)
+        channels.emission = channels.emission || emitsLight(scene, material);
+    return channels;
+}
+
+uint64_t voxelizeMemoryBytes(uint32_t resolution, VoxelizeChannels channels) {
+    return voxelizeAccumulationBytes(resolution, channels) +
            voxelVolumeBytes(ResourceSettings{.voxelResolution = resolution}, true);
 }
 
-uint64_t voxelizeAccumulationBytes(uint32_t resolution, bool alphaMaterials) {
-    return cube(resolution) * (alphaMaterials ? kAccumulationBytesPerVoxel : kOpaqueAccumulationBytesPerVoxel);
+uint64_t voxelizeAccumulationBytes(uint32_t resolution, VoxelizeChannels channels) {
+    uint64_t bytes = 0;
+    for (uint32_t channel = 0; channel < glsl::ACCUM_CHANNELS; ++channel)
+        bytes += keepsChannel(channel, channels) ? cube(resolution) * 4 : 4;
+    return bytes;
 }
 
 void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
-                         const std::string& deviceName, uint32_t resolution, bool alphaMaterials) {
+                         const std::string& deviceName, uint32_t resolution, VoxelizeChannels channels) {
     const uint64_t heapBytes = largestDeviceLocalHeap(memory);
-    if (gridFits(heapBytes, limits.maxStorageBufferRange, resolution, alphaMaterials)) return;
+    if (gridFits(heapBytes, limits.maxStorageBufferRange, resolution, channels)) return;
     uint32_t fitting = resolution;
-    while (fitting > 1 && !gridFits(heapBytes, limits.maxStorageBufferRange, fitting, alphaMaterials)) fitting /= 2;
+    while (fitting > 1 && !gridFits(heapBytes, limits.maxStorageBufferRange, fitting, channels)) fitting /= 2;
     const std::string size = std::to_string(resolution);
     std::string message =
-        "a " + size + "³ voxel grid needs " + std::to_string(voxelizeMemoryBytes(resolution, alphaMaterials) >> 20) +
+        "a " + size + "³ voxel grid needs " + std::to_string(voxelizeMemoryBytes(resolution, channels) >> 20) +
         " MiB of GPU memory, more than " + deviceName + " can spare (half of its " + std::to_string(heapBytes >> 20) +
         " MiB heap, buffers of at most " + std::to_string(limits.maxStorageBufferRange >> 20) + " MiB)";
     message += fitting > 1 ? "; a " + std::to_string(fitting) + "³ grid would fit" : "; no grid would fit";
@@ -176,10 +190,10 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     if (resolution == 0 || resolution % glsl::VOXELIZE_TILE != 0 || resolution > 1024 * glsl::VOXELIZE_TILE)
         throw Error("the voxelizer needs a resolution that is a multiple of 4, up to 4096, not " +
                     std::to_string(resolution));
-    const bool alphaMaterials = scene.hasAlphaMaterials();
+    const VoxelizeChannels channels = voxelizeChannels(scene);
     checkVoxelizeMemory(context.memoryProperties, context.properties.limits, context.deviceName(), resolution,
-                        alphaMaterials);
-    params.dispatch.z = alphaMaterials ? 1u : 0u;
+                        channels);
+    params.dispatch.z = channels.opacity ? 1u : 0u;
 
     const std::vector<glm::uvec2> items = buildVoxelizeWorkItems(scene, gpuTriangleOrder(scene, sceneGpu), grid,
                                                                  voxelizeWorkItemLimit(context.memoryProperties));
@@ -217,8 +231,7 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
     }
 
     for (uint32_t channel = 0; channel < glsl::ACCUM_CHANNELS; ++channel) {
-        const bool oneWord = channel == glsl::ACCUM_OPACITY && !alphaMaterials;
-        accumulation[channel] = Buffer(context, oneWord ? 4 : cube(resolution) * 4,
+        accumulation[channel] = Buffer(context, keepsChannel(channel, channels) ? cube(resolution) * 4 : 4,
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     }
     voxelizePipeline =

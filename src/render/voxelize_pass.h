@@ -18,17 +18,26 @@
 
 namespace vct {
 
+// The accumulation channels a scene needs beyond those every voxel has (voxelize.h): opacity for
+// MASK or BLEND materials, emission for emitting ones. Those it does not need are one word each, so
+// that a scene pays only for what it has (an opaque scene without emitters fits a 256³ grid in
+// lavapipe's share of its heap).
+struct VoxelizeChannels {
+    bool opacity = false;
+    bool emission = false;
+};
+VoxelizeChannels voxelizeChannels(const Scene& scene);
+
 // Bytes a grid of resolution³ voxels needs on the GPU: the scene voxels (VoxelVolumes) and the
-// accumulation buffers; and the accumulation buffers alone. `alphaMaterials`: the scene has MASK or
-// BLEND materials (Scene::hasAlphaMaterials), for which the opacity channel is kept (voxelize.h).
-uint64_t voxelizeMemoryBytes(uint32_t resolution, bool alphaMaterials = false);
-uint64_t voxelizeAccumulationBytes(uint32_t resolution, bool alphaMaterials = false);
+// accumulation buffers; and the accumulation buffers alone.
+uint64_t voxelizeMemoryBytes(uint32_t resolution, VoxelizeChannels channels = {});
+uint64_t voxelizeAccumulationBytes(uint32_t resolution, VoxelizeChannels channels = {});
 
 // Throws a vct::Error naming the largest resolution that would fit when the grid needs more than
 // half of the device's largest device-local heap (the rest is left to the scene, the frame's
 // images and the radiance volume), or an accumulation buffer exceeds maxStorageBufferRange.
 void checkVoxelizeMemory(const VkPhysicalDeviceMemoryProperties& memory, const VkPhysicalDeviceLimits& limits,
-                         const std::string& deviceName, uint32_t resolution, bool alphaMaterials = false);
+                         const std::string& deviceName, uint32_t resolution, VoxelizeChannels channels = {});
 
 // The order SceneGpu stores the triangles in (stable by material), checked against its material ranges.
 std::vector<uint32_t> gpuTriangleOrder(const Scene& scene, const SceneGpu& sceneGpu);

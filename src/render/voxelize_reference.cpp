@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "scene/material_textures.h"
+#include "voxelize.h"
 
 namespace vct {
 
@@ -80,6 +81,8 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
     result.albedo.assign(voxels, glm::dvec3(0.0));
     result.opacity.assign(voxels, 0.0);
     result.normal.assign(voxels, glm::dvec3(0.0));
+    result.surfaceOffset.assign(voxels, 0.0);
+    std::vector<glm::dvec3> toPlanes(voxels, glm::dvec3(0.0));
     result.emission.assign(voxels, glm::dvec3(0.0));
     result.decisionMargin.assign(voxels, std::numeric_limits<double>::infinity());
 
@@ -107,6 +110,8 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
                     result.albedo[i] += albedo;
                     result.opacity[i] = std::max(result.opacity[i], coverage);
                     result.normal[i] += normal;
+                    const glm::dvec3 centre = glm::dvec3(x, y, z) + 0.5;
+                    toPlanes[i] += normal * glm::dot(normal, triangle[0] - centre);
                     if (glm::max(emission.x, glm::max(emission.y, emission.z)) > 0.0) {
                         ++result.emitters[i];
                         result.emission[i] += emission;
@@ -118,6 +123,9 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
             const double count = double(result.count[i]);
             result.albedo[i] /= count;
             result.normal[i] /= count;
+            const double normalLength = glm::length(result.normal[i]);
+            if (normalLength > glsl::SURFACE_NORMAL_MIN)
+                result.surfaceOffset[i] = glm::dot(result.normal[i], toPlanes[i] / count) / normalLength;
             if (result.emitters[i] > 0) result.emission[i] /= double(result.emitters[i]);
         }
     return result;

@@ -45,11 +45,14 @@ VoxelRange triangleVoxelRange(const TriangleD& triangle, uint32_t resolution, do
 
 struct VoxelReference {
     uint32_t resolution = 0;
-    std::vector<uint32_t> count;       // triangles touching each voxel, index x + N·(y + N·z)
-    std::vector<uint32_t> emitters;    // emitting triangles among them
-    std::vector<glm::dvec3> albedo;    // mean linear base colour factor (0 where count = 0)
-    std::vector<double> opacity;       // the largest voxelCoverage of the touching triangles (0 where none)
-    std::vector<glm::dvec3> normal;    // mean geometric unit normal, not renormalized
+    std::vector<uint32_t> count;     // triangles touching each voxel, index x + N·(y + N·z)
+    std::vector<uint32_t> emitters;  // emitting triangles among them
+    std::vector<glm::dvec3> albedo;  // mean linear base colour factor (0 where count = 0)
+    std::vector<double> opacity;     // the largest voxelCoverage of the touching triangles (0 where none)
+    std::vector<glm::dvec3> normal;  // mean geometric unit normal, not renormalized
+    // Where the surface lies: the mean way from the voxel's centre to the touching triangles' planes,
+    // projected on the unit mean normal, in voxels (0 where the normals cancel).
+    std::vector<double> surfaceOffset;
     std::vector<glm::dvec3> emission;  // mean emission of the emitting triangles
     // How close the voxel came to flipping: the smallest |separation| of any triangle tested
     // against it (infinity if none). Float and double may disagree where this is tiny.

@@ -33,6 +33,9 @@ namespace {
 constexpr float kAlbedoTolerance = 0.6f / 255.0f;  // UNORM8 rounding plus the 2^-15 fixed point
 constexpr float kNormalTolerance = 2e-3f;          // half float (2^-11 relative) plus 2^-14 fixed point
 constexpr float kEmissionTolerance = 2e-3f;        // relative to the scene's largest emission
+// Half float of an offset below 1, plus the 2^-14 fixed point of the normal and of the way to the
+// planes, the more for a short mean normal (the offset is along its direction).
+float surfaceOffsetTolerance(const glm::dvec3& normal) { return 1e-3f + 2e-4f / float(glm::length(normal)); }
 // Voxels whose decision margin in double is below this (grid units) may legitimately differ
 // between float and double; they are counted, and must stay a tiny fraction.
 constexpr double kAmbiguousMargin = 1e-5;
@@ -140,8 +143,8 @@ Comparison compareWithTwin(const VoxelImages& gpu, const VoxelReference& twin, d
         const float opacity = twin.count[i] > 0 ? std::max(float(twin.opacity[i]), 1.0f / 255.0f) : 0.0f;
         if (std::abs(albedo.a - opacity) > kAlbedoTolerance || (albedo.a > 0.0f) != (twin.count[i] > 0))
             problem << "opacity " << albedo.a << ", the twin says " << opacity;
-        else if (normal.w != float(twin.count[i]))
-            problem << "count " << normal.w << ", the twin says " << twin.count[i];
+        else if (std::abs(normal.w - float(twin.surfaceOffset[i])) > surfaceOffsetTolerance(twin.normal[i]))
+            problem << "surface offset " << normal.w << ", the twin says " << twin.surfaceOffset[i];
         for (int c = 0; c < 3 && problem.str().empty(); ++c) {
             if (std::abs(albedo[c] - float(twin.albedo[i][c])) > kAlbedoTolerance)
                 problem << "albedo[" << c << "] " << albedo[c] << ", the twin says " << twin.albedo[i][c];
@@ -480,10 +483,11 @@ TEST_F(Voxelize, ClosedRotatedCubeGivesAShellWithoutHoles) {
 }
 
 TEST_F(Voxelize, TrianglesSharingAVoxelAverageTheirAttributes) {
-    // Two small triangles inside voxel (5, 5, 5), red facing +z and blue facing +x, different emission.
+    // Two small triangles inside voxel (5, 5, 5), red facing +z and blue facing +x, different
+    // emission; the red one's plane 0.2 voxel in front of the centre, the blue one's 0.1 behind it.
     const Scene scene =
-        makeScene({{glm::vec3(5.25f, 5.25f, 5.5f), glm::vec3(5.75f, 5.25f, 5.5f), glm::vec3(5.25f, 5.75f, 5.5f)},
-                   {glm::vec3(5.5f, 5.25f, 5.25f), glm::vec3(5.5f, 5.75f, 5.25f), glm::vec3(5.5f, 5.25f, 5.75f)}},
+        makeScene({{glm::vec3(5.25f, 5.25f, 5.7f), glm::vec3(5.75f, 5.25f, 5.7f), glm::vec3(5.25f, 5.75f, 5.7f)},
+                   {glm::vec3(5.4f, 5.25f, 5.25f), glm::vec3(5.4f, 5.75f, 5.25f), glm::vec3(5.4f, 5.25f, 5.75f)}},
                   {0, 1}, {{{1.0f, 0.0f, 0.0f}, {4.0f, 0.0f, 0.0f}}, {{0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 2.0f}}});
     const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
     const size_t voxel = 5 + 32 * (5 + 32 * 5);
@@ -492,16 +496,17 @@ TEST_F(Voxelize, TrianglesSharingAVoxelAverageTheirAttributes) {
     EXPECT_EQ(gpu.albedoOpacity[voxel].a, 1.0f);
     EXPECT_NEAR(gpu.normal[voxel].x, 0.5f, kNormalTolerance);
     EXPECT_NEAR(gpu.normal[voxel].z, 0.5f, kNormalTolerance);
-    EXPECT_EQ(gpu.normal[voxel].w, 2.0f);
+    // The mean way to their planes, (-0.1, 0, 0.2) / 2, along the unit mean normal (1, 0, 1) / √2.
+    EXPECT_NEAR(gpu.normal[voxel].w, 0.05f * std::sqrt(0.5f), 1e-3f);
     EXPECT_NEAR(gpu.emission[voxel].r, 2.0f, kEmissionTolerance * 4.0f);
     EXPECT_NEAR(gpu.emission[voxel].b, 1.0f, kEmissionTolerance * 4.0f);
 }
 
 TEST_F(Voxelize, ThinTwoSidedWallAveragesItsNormalsToNearZero) {
-    const glm::vec3 a(3.5f, 3.25f, 3.25f), b(3.5f, 3.75f, 3.25f), c(3.5f, 3.25f, 3.75f);
+    const glm::vec3 a(3.8f, 3.25f, 3.25f), b(3.8f, 3.75f, 3.25f), c(3.8f, 3.25f, 3.75f);
     const VoxelImages gpu = voxelizeOnGpu(makeScene({{a, b, c}, {a, c, b}}), exactGrid(32));
     const glm::vec4 normal = gpu.normal[3 + 32 * (3 + 32 * 3)];
-    EXPECT_EQ(normal.w, 2.0f);
+    EXPECT_EQ(normal.w, 0.0f) << "without a side, no direction for the surface to lie along";
     EXPECT_LT(glm::length(glm::vec3(normal)), kNormalTolerance) << "opposite faces in one voxel cancel";
 }
 
@@ -771,14 +776,14 @@ TEST_F(Voxelize, AlphaMaterialsMakeVoxelsAsOpaqueAsTheShareOfTheSurfaceThatIsThe
 
 TEST_F(Voxelize, SixtyFiveThousandTrianglesInOneVoxelDoNotOverflow) {
     // The largest values each sum can receive, 70 000 times over (more than the 65 535 promised).
-    const TriangleF triangle = {glm::vec3(5.1f, 5.1f, 5.5f), glm::vec3(5.9f, 5.1f, 5.5f), glm::vec3(5.1f, 5.9f, 5.5f)};
+    const TriangleF triangle = {glm::vec3(5.1f, 5.1f, 5.9f), glm::vec3(5.9f, 5.1f, 5.9f), glm::vec3(5.1f, 5.9f, 5.9f)};
     const std::vector<TriangleF> triangles(70000, triangle);
     const VoxelImages gpu =
         voxelizeOnGpu(makeScene(triangles, {}, {{glm::vec3(1.0f), {3.0f, 3.0f, 3.0f}}}), exactGrid(32));
     const size_t voxel = 5 + 32 * (5 + 32 * 5);
     EXPECT_EQ(gpu.albedoOpacity[voxel], glm::vec4(1.0f));
     EXPECT_NEAR(gpu.normal[voxel].z, 1.0f, kNormalTolerance);
-    EXPECT_EQ(gpu.normal[voxel].w, 65504.0f) << "the count saturates at the largest half float";
+    EXPECT_NEAR(gpu.normal[voxel].w, 0.4f, 1e-3f) << "the plane 0.4 voxel in front of the centre";
     EXPECT_NEAR(gpu.emission[voxel].g, 3.0f, kEmissionTolerance * 3.0f);
 }
 
@@ -824,6 +829,15 @@ TEST(VoxelizeMemory, GridTooLargeForTheHeapNamesAResolutionThatFits) {
         EXPECT_NE(std::string(error.what()).find("a small GPU"), std::string::npos) << error.what();
         EXPECT_NE(std::string(error.what()).find("a 128³ grid would fit"), std::string::npos) << error.what();
     }
+}
+
+TEST(VoxelizeMemory, AScenePaysOnlyForTheChannelsItNeeds) {
+    // Opacity (MASK, BLEND) is one channel, emission four; unneeded, each is one word.
+    const uint64_t channel = uint64_t(64) * 64 * 64 * 4 - 4;
+    EXPECT_EQ(voxelizeAccumulationBytes(64, {.opacity = true}) - voxelizeAccumulationBytes(64), channel);
+    EXPECT_EQ(voxelizeAccumulationBytes(64, {.emission = true}) - voxelizeAccumulationBytes(64), 4 * channel);
+    // lavapipe's heap is 2 GiB, of which the voxelizer may take half.
+    EXPECT_LE(voxelizeMemoryBytes(256), uint64_t(1) << 30) << "an opaque scene without emitters at 256³";
 }
 
 }  // namespace
