@@ -26,6 +26,7 @@ layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 2) in vec4 texCoords;  // xy TEXCOORD_0, zw TEXCOORD_1
+layout(location = 3) in vec4 worldTangent;  // the file's TANGENT, 0 without one
 
 layout(location = 0) out vec4 outPosition;   // xyz, w = material index + 1 (0 = nothing)
 layout(location = 1) out vec4 outNormal;     // xyz facing the camera, w = gbufferSideOcclusion
@@ -78,21 +79,26 @@ void main() {
     // The side is the interpolated normal's; a normal texture tilts the normal of that side.
     bool frontFace = dot(normal, toCamera) >= 0.0f;
     if (material.normalTexture >= 0) {
-        // ∂position/∂u and ∂v from screen-space derivatives (no tangents are stored), u, v the normal
-        // texture's own (after its transform): the same frame the path tracer takes from the
-        // triangle's edges. The ratio is the same whichever way the screen's y runs. The
-        // coordinates' derivatives are the interpolated sets' through the transform: lavapipe's
-        // derivatives of a computed value went wrong along the triangles' edges.
+        // ∂position/∂u and ∂v: the file's tangent frame where it has one for this texture; else
+        // from screen-space derivatives, u, v the normal texture's own (after its transform), the
+        // frame the path tracer takes from the triangle's edges (the ratio is the same whichever way
+        // the screen's y runs). The coordinates' derivatives are the interpolated sets' through the
+        // transform: lavapipe's derivatives of a computed value went wrong along the triangles'
+        // edges. All derivatives are taken before the choice, by the whole quad.
         GpuTextureTransform transform = material.normalTransform;
         vec2 uvX = transformedTexCoordDerivative(transform, dFdx(texCoords));
         vec2 uvY = transformedTexCoordDerivative(transform, dFdy(texCoords));
+        vec3 positionX = dFdx(worldPosition), positionY = dFdy(worldPosition);
+        vec3 texel = materialTexture(material.normalTexture, transform).rgb;
+        TextureAxes axes = TextureAxes(vec3(0.0f), vec3(0.0f));
         float determinant = uvX.x * uvY.y - uvY.x * uvX.y;
-        if (abs(determinant) > 1e-20f) {
-            vec3 alongU = (uvY.y * dFdx(worldPosition) - uvX.y * dFdy(worldPosition)) / determinant;
-            vec3 alongV = (uvX.x * dFdy(worldPosition) - uvY.x * dFdx(worldPosition)) / determinant;
-            vec3 texel = materialTexture(material.normalTexture, transform).rgb;
-            normal = normalFromTexture(normal, alongU, alongV, texel, material.normalScale);
+        if (tangentServes(worldTangent, transform)) {
+            axes = axesOfTangent(normal, worldTangent, transform);
+        } else if (abs(determinant) > 1e-20f) {
+            axes.alongU = (uvY.y * positionX - uvX.y * positionY) / determinant;
+            axes.alongV = (uvX.x * positionY - uvY.x * positionX) / determinant;
         }
+        normal = normalFromTexture(normal, axes.alongU, axes.alongV, texel, material.normalScale);
     }
     if (!frontFace) normal = -normal;
 

@@ -13,6 +13,7 @@ struct GpuVertex {
     vec4 positionU;  // xyz position, w texture u (TEXCOORD_0)
     vec4 normalV;    // xyz normal, w texture v (TEXCOORD_0)
     vec4 texCoord1;  // xy TEXCOORD_1 (TEXCOORD_0 where the file has none), zw unused
+    vec4 tangent;    // the file's TANGENT (xyz unit, w handedness ±1), 0 where it has none (Vertex::tangent)
 };
 
 struct GpuMaterial {

@@ -3,13 +3,49 @@
 // (decreasing v), +z along the surface normal. The frame is MikkTSpace's where the texture
 // coordinates are not skewed: the tangent ∂position/∂u made perpendicular to the normal, the
 // bitangent ±cross(normal, tangent), the sign that of up the image (so mirrored coordinates, as a
-// symmetric model's two halves share one texture, tilt their normals the mirrored way).
+// symmetric model's two halves share one texture, tilt their normals the mirrored way). ∂position/∂u
+// and ∂v come from the file's TANGENT where it has one, else from each triangle's coordinates.
 #ifndef VCT_NORMAL_MAP_H
 #define VCT_NORMAL_MAP_H
 
 #include "cpp_glsl.h"
+#include "texture_transform.h"
 
 VCT_SHARED_BEGIN
+
+// ∂position/∂u and ∂position/∂v, u and v the normal texture's own coordinates (after its transform).
+struct TextureAxes {
+    vec3 alongU;
+    vec3 alongV;
+};
+
+// The axes of a glTF TANGENT (xyz unit, along increasing u of TEXCOORD_0; the bitangent
+// cross(normal, xyz)·w points up the image, towards decreasing v) through the linear part A of the
+// normal texture's KHR_texture_transform, (u', v') = A (u, v): ∂p/∂(u', v') = ∂p/∂(u, v) A⁻¹. The file
+// gives directions only, so u and v are taken to advance alike along the surface (exact without a
+// rotation or an unequal scale). Zero (the normal left alone) where the transform is singular.
+// Vertex tangents are smooth across a mesh's triangles, where the axes from each triangle's own
+// texture coordinates turn at its edges (a low-polygon sphere's normal-mapped light shows its facets).
+SHARED_FN TextureAxes axesOfTangent(vec3 normal, vec4 tangent, GpuTextureTransform transform) {
+    vec3 alongU = vec3(tangent.x, tangent.y, tangent.z);
+    vec3 alongV = -cross(normal, alongU) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+    float a = transform.rowU.x, b = transform.rowU.y, c = transform.rowV.x, d = transform.rowV.y;
+    float determinant = a * d - b * c;
+    TextureAxes axes;
+    axes.alongU = vec3(0.0f);
+    axes.alongV = vec3(0.0f);
+    if (!(abs(determinant) > 1e-20f)) return axes;
+    axes.alongU = (alongU * d - alongV * c) / determinant;
+    axes.alongV = (alongV * a - alongU * b) / determinant;
+    return axes;
+}
+
+// Whether a point's interpolated TANGENT frame serves the normal texture: the file has one (not
+// zero) and the texture reads TEXCOORD_0, the set the tangents follow.
+SHARED_FN bool tangentServes(vec4 tangent, GpuTextureTransform transform) {
+    return dot(vec3(tangent.x, tangent.y, tangent.z), vec3(tangent.x, tangent.y, tangent.z)) > 1e-12f &&
+           transform.rowU.w < 0.5f;
+}
 
 // The shading normal from a normal texture's (linear) `texel`, around the unit surface `normal`;
 // `alongU` and `alongV` are ∂position/∂u and ∂position/∂v. `scale` is glTF's normalTexture.scale,

@@ -12,7 +12,7 @@ static_assert(offsetof(FrameConstants, viewProjection) == 0);
 static_assert(sizeof(GpuMaterial) == 256 && offsetof(GpuMaterial, metallic) == 48);  // std430 array stride
 static_assert(offsetof(GpuMaterial, alphaMode) == 88 && offsetof(GpuMaterial, alphaCutoff) == 92);
 static_assert(offsetof(GpuMaterial, baseColorTransform) == 96 && sizeof(GpuTextureTransform) == 32);
-static_assert(sizeof(GpuVertex) == 48);
+static_assert(sizeof(GpuVertex) == 64);
 static_assert(offsetof(FrameConstants, inverseViewProjection) == 64);
 static_assert(offsetof(FrameConstants, grid) == 128 && sizeof(VoxelGridParams) == 32);
 static_assert(offsetof(FrameConstants, cameraPosition) == 160);  // a vec3 starts on 16 bytes

@@ -664,6 +664,8 @@ struct Converter {
                                                            : std::vector<float>{};
         };
         const std::vector<float> normals = readAttribute("NORMAL");
+        // glTF 2.0 §3.7.2.1: without normals (flat shading) the file's tangents are ignored.
+        const std::vector<float> tangents = normals.empty() ? std::vector<float>{} : readAttribute("TANGENT");
         const std::vector<float> uvs = readAttribute("TEXCOORD_0");
         std::vector<float> uvs1 = readAttribute("TEXCOORD_1");
         const uint32_t material = uint32_t(materialOf(primitive));
@@ -691,6 +693,7 @@ struct Converter {
                 vertex.v = uvs[2 * i + 1];
             }
             if (!uvs1.empty()) vertex.uv1 = glm::vec2(uvs1[2 * i], uvs1[2 * i + 1]);
+            if (!tangents.empty()) vertex.tangent = worldTangent(linear, glm::make_vec4(&tangents[4 * i]));
         }
 
         const bool mirrored = determinant < 0.0;  // a mirroring transform turns front faces into back faces
@@ -720,6 +723,17 @@ struct Converter {
             }
             scene.triangleMaterials.push_back(material);
         }
+    }
+
+    // A TANGENT in world space: its direction through the node's linear transform, and its
+    // handedness turned over by a mirroring one (which turns the normal's side over too). Zero (the
+    // tangent derived per pixel instead) where it has no direction.
+    static glm::vec4 worldTangent(const glm::dmat3& linear, const glm::vec4& tangent) {
+        const glm::dvec3 direction = linear * glm::dvec3(glm::vec3(tangent));
+        const double length = glm::length(direction);
+        if (!(length > 0.0)) return glm::vec4(0.0f);
+        const double handedness = (tangent.w < 0.0f ? -1.0 : 1.0) * (glm::determinant(linear) < 0.0 ? -1.0 : 1.0);
+        return glm::vec4(glm::vec3(direction / length), float(handedness));
     }
 
     static glm::vec3 faceNormalOf(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {

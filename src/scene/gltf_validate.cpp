@@ -275,7 +275,7 @@ struct Validator {
     // The values the loader reads: finite positions, normals and texture coordinates, and
     // indices inside the vertex count. Read only once the geometry is known to fit.
     void checkPrimitiveValues(const std::string& path, const tinygltf::Primitive& primitive) {
-        for (const char* name : {"POSITION", "NORMAL", "TEXCOORD_0", "TEXCOORD_1"}) {
+        for (const char* name : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1"}) {
             const auto attribute = primitive.attributes.find(name);
             if (attribute != primitive.attributes.end())
                 checkFiniteValues(path + ".attributes." + name, attribute->second);

@@ -19,7 +19,7 @@
 
 namespace vct {
 
-// 48 bytes, laid out as three vec4 so the GPU can read it from a storage buffer (std430).
+// 64 bytes, laid out as four vec4 so the GPU can read it from a storage buffer (std430).
 struct Vertex {
     glm::vec3 position{0.0f};
     float u = 0.0f;  // TEXCOORD_0
@@ -27,6 +27,9 @@ struct Vertex {
     float v = 0.0f;
     glm::vec2 uv1{0.0f};     // TEXCOORD_1; a file without one gets TEXCOORD_0 here
     glm::vec2 unused{0.0f};  // fills the third vec4
+    // The file's TANGENT in world space: xyz unit, along increasing u of TEXCOORD_0; w = ±1, the
+    // bitangent cross(normal, xyz)·w. All zero where the file has none (normal_map.h).
+    glm::vec4 tangent{0.0f};
 };
 
 // A material's use of a texture, as a glTF textureInfo says it: which texture, read at which

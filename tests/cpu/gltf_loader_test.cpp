@@ -111,6 +111,40 @@ TEST(GltfLoader, NegativeScaleFlipsWindingSoFrontFacesStayFront) {
     expectNear(windingNormal(scene, 0), normal);
 }
 
+TEST(GltfLoader, TangentsTurnWithTheNodeAndAMirrorTurnsTheirHandednessOver) {
+    // A tangent along +x (handedness +1) under a node turned 90° about z: along +y. Mirrored in x
+    // first (glTF scales before it rotates): along -y, and its handedness turned over, so that the
+    // bitangent cross(normal, tangent)·w is still the transformed file's, R·S·(+y) = -x.
+    for (const bool mirrored : {false, true}) {
+        GltfBuilder gltf;
+        const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        const int normals = gltf.addVec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+        const int tangents = gltf.addVec4({{2, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, 1}});  // not unit: normalized
+        const int mesh = gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}, {"TANGENT", tangents}});
+        json node = {{"mesh", mesh}, {"rotation", {0, 0, std::sqrt(0.5), std::sqrt(0.5)}}};  // 90° about z
+        if (mirrored) node["scale"] = {-1, 1, 1};
+        gltf.setScene({gltf.addNode(node)});
+        const Scene scene = loadBuilt(gltf);
+        ASSERT_EQ(scene.vertices.size(), 3u);
+        for (const Vertex& vertex : scene.vertices) {
+            expectNear(glm::vec3(vertex.tangent), {0, mirrored ? -1.0f : 1.0f, 0});
+            EXPECT_EQ(vertex.tangent.w, mirrored ? -1.0f : 1.0f);
+            expectNear(vertex.normal, {0, 0, 1});
+            expectNear(glm::cross(vertex.normal, glm::vec3(vertex.tangent)) * vertex.tangent.w, {-1, 0, 0});
+        }
+    }
+}
+
+TEST(GltfLoader, TangentsWithoutNormalsAreIgnored) {
+    // glTF 2.0 §3.7.2.1: flat normals are generated, and the tangents the file gives are not used.
+    GltfBuilder gltf;
+    const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int tangents = gltf.addVec4({{1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, 1}});
+    gltf.setScene({gltf.addNode({{"mesh", gltf.addMesh({{"POSITION", positions}, {"TANGENT", tangents}})}})});
+    const Scene scene = loadBuilt(gltf);
+    for (const Vertex& vertex : scene.vertices) EXPECT_EQ(vertex.tangent, glm::vec4(0.0f));
+}
+
 TEST(GltfLoader, GeneratesFlatNormalsWhenNormalsAreMissing) {
     GltfBuilder gltf;
     // Two triangles folded along the x axis: one in the floor (y = 0), one in the wall (z = 0).

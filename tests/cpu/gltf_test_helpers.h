@@ -139,6 +139,12 @@ struct GltfBuilder {
         return addAccessor(flat, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC3", values.size());
     }
 
+    int addVec4(const std::vector<glm::vec4>& values) {
+        std::vector<float> flat;
+        for (const glm::vec4& v : values) flat.insert(flat.end(), {v.x, v.y, v.z, v.w});
+        return addAccessor(flat, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC4", values.size());
+    }
+
     int addVec2(const std::vector<glm::vec2>& values) {
         std::vector<float> flat;
         for (const glm::vec2& v : values) flat.insert(flat.end(), {v.x, v.y});

@@ -179,6 +179,15 @@ TEST(GltfValidation, NanNormalAndInfiniteTexcoordAreRefused) {
         gltf.setScene({gltf.addNode({{"mesh", gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}})}})});
         expectRefused(gltf, "attributes.NORMAL: element 1 holds nan");
     }
+    {
+        GltfBuilder gltf;
+        const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        const int normals = gltf.addVec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+        const int tangents = gltf.addVec4({{1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, nan}});
+        gltf.setScene({gltf.addNode(
+            {{"mesh", gltf.addMesh({{"POSITION", positions}, {"NORMAL", normals}, {"TANGENT", tangents}})}})});
+        expectRefused(gltf, "attributes.TANGENT: element 2 holds nan");
+    }
     GltfBuilder gltf;
     const int positions = gltf.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
     const int uvs = gltf.addVec2({{0, 0}, {1, 0}, {0, -infinity}});
@@ -316,23 +325,23 @@ TEST(GltfValidation, MeshOfMoreVerticesThanABufferTakesIsRefusedFromItsCounts) {
         gltf.document["accessors"].push_back(huge);
         gltf.document["meshes"][0]["primitives"][0]["attributes"] = {{"POSITION", 2}};
         expectRefused(gltf,
-                      "its 268435456 vertices (268435455 once each triangle has its own) need 12288 MiB in one "
+                      "its 268435456 vertices (268435455 once each triangle has its own) need 16384 MiB in one "
                       "storage buffer, more than a typical GPU's "
-                      "maxStorageBufferRange of 2048 MiB; at most 44739242 vertices fit");
+                      "maxStorageBufferRange of 2048 MiB; at most 33554432 vertices fit");
     }
 }
 
 TEST(GltfValidation, SceneOverTheDevicesBufferLimitIsRefusedWithTheRenderersSentence) {
-    GltfBuilder gltf = test::triangleScene();  // 3 vertices of 48 bytes
+    GltfBuilder gltf = test::triangleScene();  // 3 vertices of 64 bytes
     TempFolder folder;
     const std::string path = gltf.writeGltf(folder, "scene").string();
     LoadOptions options;
-    options.bufferLimits = {96, "a small device"};
+    options.bufferLimits = {128, "a small device"};
     expectRefused(path,
-                  "its 3 vertices need 144 bytes in one storage buffer, more than a small device's "
-                  "maxStorageBufferRange of 96 bytes; at most 2 vertices fit",
+                  "its 3 vertices need 192 bytes in one storage buffer, more than a small device's "
+                  "maxStorageBufferRange of 128 bytes; at most 2 vertices fit",
                   options);
-    options.bufferLimits.maxBufferBytes = 144;
+    options.bufferLimits.maxBufferBytes = 192;
     EXPECT_EQ(loadError(path, options), "");
 }
 

@@ -379,6 +379,43 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     }
 }
 
+TEST(PathTracer, ANormalTextureFollowsTheFilesTangents) {
+    // The plane and texture above, its vertices given a TANGENT along -x (handedness +1), against
+    // +x where u increases: +u tilts towards -x, and up the image, the bitangent cross(+y, -x) = +z,
+    // towards +z. From the triangles' coordinates the tilts were +x and -z.
+    const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
+    const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
+    Scene scene;
+    Texture texture;
+    texture.width = 8;
+    texture.height = 1;
+    texture.srgb = false;
+    for (uint32_t x = 0; x < 8; ++x)
+        texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
+    scene.textures.push_back(texture);
+    Material material = lambertian(glm::vec3(1.0f));
+    material.normalTexture.index = 0;
+    addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
+    for (Vertex& vertex : scene.vertices) vertex.tangent = glm::vec4(-1.0f, 0.0f, 0.0f, 1.0f);
+    const glm::vec3 toSun = -scene.lights.back().direction;
+    const RenderResult result = render(createPathTracer(scene), smallRender(scene, 16, 64, Component::Full, 2));
+
+    auto expected = [&](glm::vec3 texel, glm::vec3 tangent, glm::vec3 bitangent) {
+        const glm::vec3 local = glm::normalize(texel / 255.0f * 2.0f - 1.0f);
+        return std::max(glm::dot(local.x * tangent + local.y * bitangent + local.z * glm::vec3(0, 1, 0), toSun), 0.0f);
+    };
+    const glm::vec3 alongU(tilt, 128, up), upImage(128, tilt, up);
+    const float left = expected(alongU, {-1, 0, 0}, {0, 0, 1}), right = expected(upImage, {-1, 0, 0}, {0, 0, 1});
+    // The frame from the coordinates would give other light.
+    ASSERT_GT(std::abs(left - expected(alongU, {1, 0, 0}, {0, 0, -1})), 0.1f * left);
+    ASSERT_GT(std::abs(right - expected(upImage, {1, 0, 0}, {0, 0, -1})), 0.1f * right);
+    for (uint32_t y = 4; y < 12; ++y) {
+        for (uint32_t x = 0; x <= 5; ++x) EXPECT_NEAR(result.image.pixel(x, y)[0], left, 0.01f * left) << x << "," << y;
+        for (uint32_t x = 10; x < 16; ++x)
+            EXPECT_NEAR(result.image.pixel(x, y)[0], right, 0.01f * right) << x << "," << y;
+    }
+}
+
 // A quad with u from 0 to 1 along `right` and v from 0 to 1 along `down`, facing down × right: the
 // side from which the texture reads as an image (right to the right, down downwards).
 void addTexturedQuad(Scene& scene, glm::vec3 corner, glm::vec3 right, glm::vec3 down, uint32_t material) {

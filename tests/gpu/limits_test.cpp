@@ -97,14 +97,14 @@ TEST_F(Limits, ImageWhoseSupersampledTargetsExceedTheDeviceIsRefused) {
 
 TEST_F(Limits, SceneWhoseBuffersExceedMaxStorageBufferRangeIsRefused) {
     // A device whose storage buffers hold 256 KiB: enough for a 32³ grid's sums (128 KiB each),
-    // not for 10 000 vertices of 48 bytes (the extra vertices are unused, which is allowed).
+    // not for 10 000 vertices of 64 bytes (the extra vertices are unused, which is allowed).
     limits.maxStorageBufferRange = 256 * 1024;
-    ASSERT_EQ(sizeof(glsl::GpuVertex), 48u);
+    ASSERT_EQ(sizeof(glsl::GpuVertex), 64u);
     Scene large = cornell;
     large.vertices.resize(10000, cornell.vertices.front());
     const std::string message = check(large, smallSettings());
-    EXPECT_NE(message.find("scene 'cornell': its 10000 vertices need 469 KiB"), std::string::npos) << message;
-    EXPECT_NE(message.find("maxStorageBufferRange of 256 KiB; at most 5461 vertices fit"), std::string::npos)
+    EXPECT_NE(message.find("scene 'cornell': its 10000 vertices need 625 KiB"), std::string::npos) << message;
+    EXPECT_NE(message.find("maxStorageBufferRange of 256 KiB; at most 4096 vertices fit"), std::string::npos)
         << message;
     EXPECT_EQ(check(cornell, smallSettings()), "");
 }

@@ -152,6 +152,43 @@ TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) 
     }
 }
 
+TEST_F(MaterialTextures, ANormalTextureFollowsTheFilesTangents) {
+    // The quad and texture above, with a TANGENT along +y (handedness +1), a quarter turn from the
+    // direction u increases in (+x): +u tilts towards +y, and up the image, the bitangent
+    // cross(+z, +y) = -x, towards -x. Taken from the triangles' coordinates, the tilts were +x and +y.
+    const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
+    const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
+    std::vector<uint16_t> texels;
+    for (uint32_t x = 0; x < 8; ++x)
+        texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
+    GltfBuilder gltf = quadFacingCamera();
+    const int tangents = gltf.addVec4({{0, 1, 0, 1}, {0, 1, 0, 1}, {0, 1, 0, 1}, {0, 1, 0, 1}});
+    gltf.document["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = tangents;
+    gltf.document["images"] =
+        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
+    const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
+
+    auto expected = [&](glm::vec3 texel, glm::vec3 tangent, glm::vec3 bitangent) {
+        const glm::vec3 local = glm::normalize(texel * 2.0f - 1.0f);
+        const glm::vec3 normal = local.x * tangent + local.y * bitangent + local.z * glm::vec3(0, 0, 1);
+        const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
+        return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
+    };
+    const glm::vec3 alongU = glm::vec3(tilt, 128, up) / 255.0f, upImage = glm::vec3(128, tilt, up) / 255.0f;
+    const float left = expected(alongU, {0, 1, 0}, {-1, 0, 0}), right = expected(upImage, {0, 1, 0}, {-1, 0, 0});
+    // The frame from the coordinates would give other light.
+    ASSERT_GT(std::abs(left - expected(alongU, {1, 0, 0}, {0, 1, 0})), 0.1f * left);
+    ASSERT_GT(std::abs(right - expected(upImage, {1, 0, 0}, {0, 1, 0})), 0.1f * right);
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x <= 10; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], left, kRelativeTolerance * left) << x << "," << y;
+        for (uint32_t x = 21; x < kSize; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], right, kRelativeTolerance * right) << x << "," << y;
+    }
+}
+
 TEST_F(MaterialTextures, ATexturedWallBleedsItsTexturesColourIntoTheIndirectLight) {
     // A white floor (the quad) beside a wall both lit by a sun. The wall is red once through its
     // base colour factor and once through a red texture under a white factor, as glTF models are

@@ -81,6 +81,7 @@ struct TrianglePoint {
     glm::vec3 geometricNormal;       // from the counter-clockwise winding
     glm::vec3 shadingNormal;         // interpolated vertex normal
     glm::vec2 texCoord0, texCoord1;  // both sets, interpolated
+    glm::vec4 tangent;               // the file's TANGENT, interpolated (0 without one)
     const Vertex* corners[3];
 };
 
@@ -93,6 +94,7 @@ TrianglePoint pointOnTriangle(const Scene& scene, uint32_t triangle, float b1, f
     point.position = b0 * v0.position + b1 * v1.position + b2 * v2.position;
     point.texCoord0 = b0 * glm::vec2(v0.u, v0.v) + b1 * glm::vec2(v1.u, v1.v) + b2 * glm::vec2(v2.u, v2.v);
     point.texCoord1 = b0 * v0.uv1 + b1 * v1.uv1 + b2 * v2.uv1;
+    point.tangent = b0 * v0.tangent + b1 * v1.tangent + b2 * v2.tangent;
     const glm::vec3 cross = glm::cross(v1.position - v0.position, v2.position - v0.position);
     const float crossLength = glm::length(cross);
     const glm::vec3 shading = b0 * v0.normal + b1 * v1.normal + b2 * v2.normal;
@@ -110,19 +112,19 @@ glm::vec2 texCoordOf(const glsl::GpuTextureTransform& transform, const Vertex& v
     return glsl::transformedTexCoord(transform, glm::vec2(vertex.u, vertex.v), vertex.uv1);
 }
 
-// ∂position/∂u and ∂position/∂v over the point's triangle, u and v the texture's own (after
-// `transform`); zero where the triangle's texture coordinates are degenerate.
-struct TextureAxes {
-    glm::vec3 alongU{0.0f}, alongV{0.0f};
-};
-TextureAxes textureAxes(const TrianglePoint& point, const glsl::GpuTextureTransform& transform) {
+// ∂position/∂u and ∂position/∂v at the point, u and v the texture's own (after `transform`): the
+// file's tangent frame where it has one for the texture (normal_map.h), else the triangle's, from its
+// texture coordinates; zero where those are degenerate.
+glsl::TextureAxes textureAxes(const TrianglePoint& point, const glsl::GpuTextureTransform& transform) {
+    if (glsl::tangentServes(point.tangent, transform))
+        return glsl::axesOfTangent(point.shadingNormal, point.tangent, transform);
     const glm::vec3 p0 = point.corners[0]->position;
     const glm::vec3 e1 = point.corners[1]->position - p0, e2 = point.corners[2]->position - p0;
     const glm::vec2 uv0 = texCoordOf(transform, *point.corners[0]);
     const glm::vec2 uv1 = texCoordOf(transform, *point.corners[1]) - uv0;
     const glm::vec2 uv2 = texCoordOf(transform, *point.corners[2]) - uv0;
     const float determinant = uv1.x * uv2.y - uv2.x * uv1.y;
-    if (!(std::abs(determinant) > 1e-20f)) return {};
+    if (!(std::abs(determinant) > 1e-20f)) return {glm::vec3(0.0f), glm::vec3(0.0f)};
     return {(uv2.y * e1 - uv1.y * e2) / determinant, (uv1.x * e2 - uv2.x * e1) / determinant};
 }
 
@@ -220,7 +222,7 @@ SurfacePoint surfaceAt(const PathTracer& tracer, const RayHit& hit, const glm::v
     glm::vec3 shadingNormal = point.shadingNormal;
     if (hasTexture(tracer, material.normalTexture)) {
         const glm::vec3 texel = textureAt(tracer, material.normalTexture, transforms.normal, point);
-        const TextureAxes axes = textureAxes(point, transforms.normal);
+        const glsl::TextureAxes axes = textureAxes(point, transforms.normal);
         shadingNormal = glsl::normalFromTexture(shadingNormal, axes.alongU, axes.alongV, texel, material.normalScale);
     }
     s.shadingNormal = frontFace ? shadingNormal : -shadingNormal;
