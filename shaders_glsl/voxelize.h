@@ -16,11 +16,13 @@
 // the light falling on its surface, not on its centre: each triangle adds the way from the centre to
 // the nearest point of its plane, n·(n·(a − centre)), the same for either side of a thin wall.
 //
-// Coverage (glTF alphaMode). A material's voxelCoverage (material_textures.h, GpuMaterial::
-// voxelEmission.w) is the share of its surface that is there: a voxel's opacity is the largest
-// coverage of the triangles touching it (a surface cut into many triangles covers a voxel no more
-// than one of them does; an opaque one makes it opaque), and a triangle of coverage 0 touches
-// nothing. Albedo, normal and emission stay plain means over the triangles that touch.
+// Coverage (glTF alphaMode). A triangle covers a voxel by the share of its surface there: a
+// material's voxelCoverage (material_textures.h, GpuMaterial::voxelEmission.w) without a base colour
+// texture, with one the voxel's footprint on it (voxelize.comp: BLEND its mean alpha, MASK the share
+// of it whose alpha reaches the cutoff). A voxel's opacity is the largest coverage of the triangles
+// touching it (a surface cut into many triangles covers a voxel no more than one of them does; an
+// opaque one makes it opaque), and a triangle of coverage 0 touches nothing. Albedo, normal and
+// emission stay plain means over the triangles that touch.
 //
 // Order-independent averaging. Each touching triangle adds its attributes to integer sums with
 // atomicAdd; integer addition is associative, so the sums (and the images) do not depend on the

@@ -21,6 +21,14 @@ bool keepsChannel(uint32_t channel, VoxelizeChannels channels) {
     return true;
 }
 
+// Whether a MASK material reads a base colour texture (voxelize.comp samples it over each voxel).
+bool hasMaskTextures(const Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(), [&](const Material& material) {
+        const int texture = material.baseColorTexture.index;
+        return material.alphaMode == AlphaMode::Mask && texture >= 0 && size_t(texture) < scene.textures.size();
+    });
+}
+
 // Tiles are kept when the triangle's separation from the tile's box is at most this (grid units):
 // far above float rounding (~10⁻⁵ voxel), so a voxel the GPU marks is never in a dropped tile.
 constexpr double kTileSlack = 1e-3;
@@ -234,8 +242,8 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
         accumulation[channel] = Buffer(context, keepsChannel(channel, channels) ? cube(resolution) * 4 : 4,
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     }
-    voxelizePipeline =
-        createComputePipeline(context, "voxelize.comp", {sceneGpu.textureSetLayout}, {sceneGpu.textureCount()});
+    voxelizePipeline = createComputePipeline(context, "voxelize.comp", {sceneGpu.textureSetLayout},
+                                             {sceneGpu.textureCount(), hasMaskTextures(scene) ? 1u : 0u});
     resolvePipeline = createComputePipeline(context, "voxel_resolve.comp");
 }
 

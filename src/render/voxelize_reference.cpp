@@ -80,6 +80,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
     result.emitters.assign(voxels, 0);
     result.albedo.assign(voxels, glm::dvec3(0.0));
     result.opacity.assign(voxels, 0.0);
+    result.maskedByTexture.assign(voxels, 0);
     result.normal.assign(voxels, glm::dvec3(0.0));
     result.surfaceOffset.assign(voxels, 0.0);
     std::vector<glm::dvec3> toPlanes(voxels, glm::dvec3(0.0));
@@ -94,6 +95,9 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
         if (!(coverage > 0.0)) continue;
         const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
         const glm::dvec3 albedo = glm::clamp(glm::dvec3(glm::vec3(material.baseColorFactor)), 0.0, 1.0);
+        const int texture = material.baseColorTexture.index;
+        const bool masked =
+            material.alphaMode == AlphaMode::Mask && texture >= 0 && size_t(texture) < scene.textures.size();
         // A material emits where its emissive texture's mean is not black, with its factor.
         const glm::dvec3 emission =
             emitsLight(scene, material) ? glm::max(glm::dvec3(material.emission), 0.0) : glm::dvec3(0.0);
@@ -106,6 +110,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
                     const size_t i = result.index(uint32_t(x), uint32_t(y), uint32_t(z));
                     result.decisionMargin[i] = std::min(result.decisionMargin[i], std::abs(separation));
                     if (separation > 0.0) continue;
+                    if (masked) result.maskedByTexture[i] = 1;
                     ++result.count[i];
                     result.albedo[i] += albedo;
                     result.opacity[i] = std::max(result.opacity[i], coverage);

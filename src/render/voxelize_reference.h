@@ -49,6 +49,10 @@ struct VoxelReference {
     std::vector<uint32_t> emitters;  // emitting triangles among them
     std::vector<glm::dvec3> albedo;  // mean linear base colour factor (0 where count = 0)
     std::vector<double> opacity;     // the largest voxelCoverage of the touching triangles (0 where none)
+    // 1 where a MASK material's base colour texture touches the voxel: the GPU samples the texture
+    // over the voxel for its opacity (voxelize.comp), which decides whether it touches at all. The
+    // twin leaves such voxels to the tests' own expectations.
+    std::vector<uint8_t> maskedByTexture;
     std::vector<glm::dvec3> normal;  // mean geometric unit normal, not renormalized
     // Where the surface lies: the mean way from the voxel's centre to the touching triangles' planes,
     // projected on the unit mean normal, in voxels (0 where the normals cancel).

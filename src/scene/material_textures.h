@@ -37,11 +37,11 @@ glm::vec3 voxelEmission(const Scene& scene, const Material& material);
 // Whether the material emits at all: its voxelEmission is not black.
 bool emitsLight(const Scene& scene, const Material& material);
 
-// The share of the material's surface the voxelizer sees, in [0, 1]: its coverage (base colour
-// alpha, factor × texture) as a mean over the texture, the way voxelEmission treats emission.
-// Opaque: 1. Mask: the fraction of the texels whose alpha reaches alphaCutoff (1 or 0 without a
-// texture). Blend: the mean alpha. An approximation: a texture not mapped once over the surface (an
-// atlas, a repeat) gives every voxel of the surface the whole texture's share.
+// The share of the material's surface that is there, in [0, 1]: its coverage (base colour alpha,
+// factor × texture) as a mean over the texture, the way voxelEmission treats emission. Opaque: 1.
+// Mask: the fraction of the texels whose alpha reaches alphaCutoff (1 or 0 without a texture).
+// Blend: the mean alpha. The voxelizer takes it where the material has no base colour texture, and
+// skips a material whose share is 0; with a texture it reads each voxel's own footprint.
 float voxelCoverage(const Scene& scene, const Material& material);
 
 }  // namespace vct
