@@ -63,7 +63,7 @@ Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings
       mipsPass_(context),
       timer_(context) {
     setGeometry(scene);
-    setLights(lights_);
+    applyLights(lights_);
 }
 
 void Renderer::setGeometry(const Scene& scene) {
@@ -95,7 +95,7 @@ void Renderer::setGeometry(const Scene& scene) {
     if (shadowPass_) shadowPass_->useScene(*sceneGpu_);  // and so does the alpha-tested shadow pipeline
     stale_.voxels = true;
     staleShadowArrays_ = kAllShadowArrays;  // every shadow map shows the old geometry
-    if (shadowPass_) setLights(lights_);    // shadow views are fitted to the scene's bounds
+    if (shadowPass_) relight();             // shadow views are fitted to the scene's bounds
 }
 
 void Renderer::resize(const ImageSettings& image) {
@@ -113,6 +113,12 @@ void Renderer::resize(const ImageSettings& image) {
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
+    if (lights != lights_) applyLights(lights);
+}
+
+void Renderer::relight() { applyLights(lights_); }
+
+void Renderer::applyLights(const std::vector<Light>& lights) {
     checkLightsCanBeRendered(lights, sceneName_);
     lights_ = lights;
     std::vector<Light> local = lights;
@@ -159,7 +165,7 @@ void Renderer::setLights(const std::vector<Light>& lights) {
 
 void Renderer::setEnvironment(glm::vec3 environment) {
     environment_ = environment;
-    setLights(lights_);  // the storage scale may change with it, and the light converges again
+    relight();  // the storage scale may change with it, and the light converges again
 }
 
 void Renderer::setShading(const ShadingSettings& shading) {

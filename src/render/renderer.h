@@ -55,7 +55,12 @@ public:
 
     void setCamera(const Camera& camera) { camera_ = camera; }
     const Camera& camera() const { return camera_; }
+    // New lights: their shadow maps are redrawn and the light converges again on the next frames.
+    // The same lights again change nothing (the viewer and the bench set them every frame).
     void setLights(const std::vector<Light>& lights);
+    // The light converges again from its sources, as after a light change (the bench times that
+    // where a scene has no light to move: its emissive surfaces are geometry).
+    void relight();
     // New geometry (moved vertices, changed transforms or a new scene): re-uploaded, and the voxels
     // and shadow maps are rebuilt on the next frame. Lights and camera stay as they are.
     void setGeometry(const Scene& scene);
@@ -93,6 +98,8 @@ public:
     uint64_t deviceMemoryBytes() const;
 
 private:
+    void applyLights(const std::vector<Light>& lights);
+
     glm::mat4 writeFrameConstants();  // returns the camera's view-projection it wrote
     // The components the voxels' light depends on (glsl::VOXEL_LIGHT_FLAGS) as `shading` shows them.
     static uint32_t voxelLightFlags(const ShadingSettings& shading);

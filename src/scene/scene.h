@@ -109,6 +109,8 @@ struct Light {
     float range = 0.0f;                   // 0 = infinite
     float innerConeAngle = 0.0f;          // spot, radians
     float outerConeAngle = 0.785398163f;  // spot, radians (π/4, the glTF default)
+
+    bool operator==(const Light&) const = default;
 };
 
 // A glTF perspective camera, placed in world space. It looks down its local −Z with +Y up.

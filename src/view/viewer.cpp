@@ -39,15 +39,6 @@ bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
 }
 
-bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-        if (a[i].color != b[i].color || a[i].intensity != b[i].intensity || a[i].position != b[i].position ||
-            a[i].direction != b[i].direction)
-            return false;
-    return true;
-}
-
 // Scenes with lights but no sun get one to steer, as `--light-dir` does: shining from behind the
 // camera and above, so it reaches into open boxes like the Cornell box. (Scenes without any light
 // already have the default sun, default_light.h, as in `vct render`.)
@@ -532,7 +523,7 @@ void Viewer::applyLightEdits() {
         renderer_->setEnvironment(state_.environment);
         imageStale_ = true;
     }
-    if (sameLights(state_.lights, renderer_->lights())) return;
+    if (state_.lights == renderer_->lights()) return;
     try {
         renderer_->setLights(state_.lights);
         imageStale_ = true;
