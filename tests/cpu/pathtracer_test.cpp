@@ -330,6 +330,18 @@ TEST(PathTracer, MetallicRoughnessTextureIsLinearAndScalesTheFactors) {
     }
 }
 
+// An 8-texel normal texture whose left half holds the texel (tilt, 128, up) and right half
+// (128, tilt, up): tilted along +u, then up the image.
+Texture halfTiltedNormalTexture(uint8_t tilt, uint8_t up) {
+    Texture texture;
+    texture.width = 8;
+    texture.height = 1;
+    texture.srgb = false;
+    for (uint32_t x = 0; x < 8; ++x)
+        texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
+    return texture;
+}
+
 TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     // A Lambertian plane facing up (u along +x, v along +z, so up the image is −z) with an 8-texel
     // normal texture tilted 30° along +u on its left half and 30° up the image on its right, lit by
@@ -340,14 +352,7 @@ TEST(PathTracer, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
     for (const bool mirrored : {false, true}) {
         Scene scene;
-        Texture texture;
-        texture.width = 8;
-        texture.height = 1;
-        texture.srgb = false;
-        for (uint32_t x = 0; x < 8; ++x)
-            texture.rgba8.insert(texture.rgba8.end(),
-                                 {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
-        scene.textures.push_back(texture);
+        scene.textures.push_back(halfTiltedNormalTexture(tilt, up));
         Material material = lambertian(glm::vec3(1.0f));
         material.normalTexture.index = 0;
         addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));
@@ -386,13 +391,7 @@ TEST(PathTracer, ANormalTextureFollowsTheFilesTangents) {
     const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
     const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
     Scene scene;
-    Texture texture;
-    texture.width = 8;
-    texture.height = 1;
-    texture.srgb = false;
-    for (uint32_t x = 0; x < 8; ++x)
-        texture.rgba8.insert(texture.rgba8.end(), {uint8_t(x < 4 ? tilt : 128), uint8_t(x < 4 ? 128 : tilt), up, 255});
-    scene.textures.push_back(texture);
+    scene.textures.push_back(halfTiltedNormalTexture(tilt, up));
     Material material = lambertian(glm::vec3(1.0f));
     material.normalTexture.index = 0;
     addSunlitPlaneSeenFromAbove(scene, material, glm::vec3(0.6f, -1.0f, -0.5f));

@@ -105,6 +105,15 @@ TEST_F(MaterialTextures, MetallicRoughnessTextureScalesTheFactorsPerTexel) {
     }
 }
 
+// The samples of an 8-texel normal texture whose left half holds (tilt, 128, up) and right half
+// (128, tilt, up): tilted along +u, then up the image.
+std::vector<uint16_t> halfTiltedNormalTexels(uint8_t tilt, uint8_t up) {
+    std::vector<uint16_t> texels;
+    for (uint32_t x = 0; x < 8; ++x)
+        texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
+    return texels;
+}
+
 TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
     // A Lambertian quad whose 8-texel normal texture tilts the normal 30° along +u (towards +x, the
     // tangent) on its left half and 30° up the image (+y, the bitangent) on its right, under the
@@ -113,9 +122,7 @@ TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) 
     // model), the halves swap sides, +u tilts towards −x and up the image stays +y.
     const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
     const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
-    std::vector<uint16_t> texels;
-    for (uint32_t x = 0; x < 8; ++x)
-        texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
+    const std::vector<uint16_t> texels = halfTiltedNormalTexels(tilt, up);
     for (const bool mirrored : {false, true}) {
         GltfBuilder gltf = quadFacingCamera();
         if (mirrored) {
@@ -158,9 +165,7 @@ TEST_F(MaterialTextures, ANormalTextureFollowsTheFilesTangents) {
     // cross(+z, +y) = -x, towards -x. Taken from the triangles' coordinates, the tilts were +x and +y.
     const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
     const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
-    std::vector<uint16_t> texels;
-    for (uint32_t x = 0; x < 8; ++x)
-        texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
+    const std::vector<uint16_t> texels = halfTiltedNormalTexels(tilt, up);
     GltfBuilder gltf = quadFacingCamera();
     const int tangents = gltf.addVec4({{0, 1, 0, 1}, {0, 1, 0, 1}, {0, 1, 0, 1}, {0, 1, 0, 1}});
     gltf.document["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = tangents;
