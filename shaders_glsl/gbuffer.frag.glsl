@@ -90,14 +90,9 @@ void main() {
         vec2 uvY = transformedTexCoordDerivative(transform, dFdy(texCoords));
         vec3 positionX = dFdx(worldPosition), positionY = dFdy(worldPosition);
         vec3 texel = materialTexture(material.normalTexture, transform).rgb;
-        TextureAxes axes = TextureAxes(vec3(0.0f), vec3(0.0f));
-        float determinant = uvX.x * uvY.y - uvY.x * uvX.y;
-        if (tangentServes(worldTangent, transform)) {
-            axes = axesOfTangent(normal, worldTangent, transform);
-        } else if (abs(determinant) > 1e-20f) {
-            axes.alongU = (uvY.y * positionX - uvX.y * positionY) / determinant;
-            axes.alongV = (uvX.x * positionY - uvY.x * positionX) / determinant;
-        }
+        TextureAxes axes = tangentServes(worldTangent, transform)
+                               ? axesOfTangent(normal, worldTangent, transform)
+                               : axesFromSteps(positionX, positionY, uvX, uvY);
         normal = normalFromTexture(normal, axes.alongU, axes.alongV, texel, material.normalScale);
     }
     if (!frontFace) normal = -normal;

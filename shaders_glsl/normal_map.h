@@ -19,9 +19,25 @@ struct TextureAxes {
     vec3 alongV;
 };
 
+// The axes from two steps across the surface, `step1` and `step2` (positions), over which the
+// texture's coordinates change by `change1` and `change2`: the 2 × 2 system inverted. Zero (the
+// normal left alone) where the coordinates' changes are degenerate. The G-buffer takes its steps
+// from screen-space derivatives, the path tracer from the triangle's edges.
+SHARED_FN TextureAxes axesFromSteps(vec3 step1, vec3 step2, vec2 change1, vec2 change2) {
+    float determinant = change1.x * change2.y - change2.x * change1.y;
+    TextureAxes axes;
+    axes.alongU = vec3(0.0f);
+    axes.alongV = vec3(0.0f);
+    if (!(abs(determinant) > 1e-20f)) return axes;
+    axes.alongU = (change2.y * step1 - change1.y * step2) / determinant;
+    axes.alongV = (change1.x * step2 - change2.x * step1) / determinant;
+    return axes;
+}
+
 // The axes of a glTF TANGENT (xyz unit, along increasing u of TEXCOORD_0; the bitangent
 // cross(normal, xyz)·w points up the image, towards decreasing v) through the linear part A of the
-// normal texture's KHR_texture_transform, (u', v') = A (u, v): ∂p/∂(u', v') = ∂p/∂(u, v) A⁻¹. The file
+// normal texture's KHR_texture_transform, (u', v') = A (u, v): unit steps along ∂p/∂u and ∂p/∂v change
+// (u', v') by A's columns. The file
 // gives directions only, so u and v are taken to advance alike along the surface (exact without a
 // rotation or an unequal scale). Zero (the normal left alone) where the transform is singular.
 // Vertex tangents are smooth across a mesh's triangles, where the axes from each triangle's own
@@ -29,15 +45,8 @@ struct TextureAxes {
 SHARED_FN TextureAxes axesOfTangent(vec3 normal, vec4 tangent, GpuTextureTransform transform) {
     vec3 alongU = vec3(tangent.x, tangent.y, tangent.z);
     vec3 alongV = -cross(normal, alongU) * (tangent.w < 0.0f ? -1.0f : 1.0f);
-    float a = transform.rowU.x, b = transform.rowU.y, c = transform.rowV.x, d = transform.rowV.y;
-    float determinant = a * d - b * c;
-    TextureAxes axes;
-    axes.alongU = vec3(0.0f);
-    axes.alongV = vec3(0.0f);
-    if (!(abs(determinant) > 1e-20f)) return axes;
-    axes.alongU = (alongU * d - alongV * c) / determinant;
-    axes.alongV = (alongV * a - alongU * b) / determinant;
-    return axes;
+    return axesFromSteps(alongU, alongV, vec2(transform.rowU.x, transform.rowV.x),
+                         vec2(transform.rowU.y, transform.rowV.y));
 }
 
 // Whether a point's interpolated TANGENT frame serves the normal texture: the file has one (not

@@ -41,16 +41,26 @@ vec4 cornerTexCoords(uint triangle, uint corner) {
     return vec4(vertex.positionU.w, vertex.normalV.w, vertex.texCoord1.xy);
 }
 
+// Whether a triangle's edges e1, e2 span a plane in float (their Gram determinant not negligible).
+bool spansPlane(vec3 e1, vec3 e2) {
+    float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+    return d11 * d22 - d12 * d12 > 1e-12f * d11 * d22;
+}
+
+// (s, t) such that s·e1 + t·e2 is `d` projected onto the plane the edges span (their Gram matrix
+// inverted). Only for edges that span one.
+vec2 edgeCoordinates(vec3 e1, vec3 e2, vec3 d) {
+    float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+    float denominator = d11 * d22 - d12 * d12;
+    return vec2(d22 * dot(d, e1) - d12 * dot(d, e2), d11 * dot(d, e2) - d12 * dot(d, e1)) / denominator;
+}
+
 // Barycentric weights of the voxel's centre p projected onto the triangle's plane (some negative
 // where it falls outside the triangle). Equal weights if the triangle is degenerate.
 vec3 planeWeights(vec3 a, vec3 b, vec3 c, vec3 p) {
-    vec3 e1 = b - a, e2 = c - a, d = p - a;
-    float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
-    float denominator = d11 * d22 - d12 * d12;
-    if (!(denominator > 1e-12f * d11 * d22)) return vec3(1.0f / 3.0f);
-    float v = (d22 * dot(d, e1) - d12 * dot(d, e2)) / denominator;
-    float w = (d11 * dot(d, e2) - d12 * dot(d, e1)) / denominator;
-    return vec3(1.0f - v - w, v, w);
+    if (!spansPlane(b - a, c - a)) return vec3(1.0f / 3.0f);
+    vec2 vw = edgeCoordinates(b - a, c - a, p - a);
+    return vec3(1.0f - vw.x - vw.y, vw.x, vw.y);
 }
 
 // The weights of a point of the triangle near the voxel's centre: its projection pulled inside
@@ -60,65 +70,66 @@ vec3 weightsNear(vec3 planeWeights) {
     return weights / (weights.x + weights.y + weights.z);
 }
 
-// A material texture averaged over the voxel: read at `weights` on the triangle, at the mip level
-// whose texels are as wide on the surface as a voxel (the triangle's texels per voxel side, from
-// its area in texels over its area in voxels, `voxelArea` twice that). A triangle whose coordinates
-// do not change reads its one point's texel.
-vec4 textureOverVoxel(int index, GpuTextureTransform transform, vec4 texCoords[3], vec3 weights, float voxelArea) {
-    vec2 t0 = transformedTexCoord(transform, texCoords[0].xy, texCoords[0].zw);
-    vec2 t1 = transformedTexCoord(transform, texCoords[1].xy, texCoords[1].zw);
-    vec2 t2 = transformedTexCoord(transform, texCoords[2].xy, texCoords[2].zw);
+// A material texture's coordinates at the triangle's corners, through its transform.
+vec2[3] cornerCoordinates(GpuTextureTransform transform, vec4 texCoords[3]) {
+    return vec2[3](transformedTexCoord(transform, texCoords[0].xy, texCoords[0].zw),
+                   transformedTexCoord(transform, texCoords[1].xy, texCoords[1].zw),
+                   transformedTexCoord(transform, texCoords[2].xy, texCoords[2].zw));
+}
+
+// How many of the texture's texels span a voxel's side on the triangle: its area in texels over its
+// area in voxels (`voxelArea` twice that), square-rooted. 0 where its coordinates do not change.
+float texelsPerVoxel(int index, vec2 t[3], float voxelArea) {
     vec2 size = vec2(textureSize(colorTextures[index], 0));
-    vec2 e1 = (t1 - t0) * size, e2 = (t2 - t0) * size;
-    float texelArea = abs(e1.x * e2.y - e1.y * e2.x);
-    float texelsPerVoxel = sqrt(texelArea / max(voxelArea, 1e-20f));
-    float level = texelsPerVoxel > 1.0f ? log2(texelsPerVoxel) : 0.0f;
-    return textureLod(colorTextures[index], weights.x * t0 + weights.y * t1 + weights.z * t2, level);
+    vec2 e1 = (t[1] - t[0]) * size, e2 = (t[2] - t[0]) * size;
+    return sqrt(abs(e1.x * e2.y - e1.y * e2.x) / max(voxelArea, 1e-20f));
+}
+
+// The mip level whose texels are `texels` level-0 texels wide (level 0 below one).
+float levelAcross(float texels) { return texels > 1.0f ? log2(texels) : 0.0f; }
+
+// A material texture averaged over the voxel: read at `weights` on the triangle, at the mip level
+// whose texels are as wide on the surface as a voxel. A triangle whose coordinates do not change
+// reads its one point's texel.
+vec4 textureOverVoxel(int index, GpuTextureTransform transform, vec4 texCoords[3], vec3 weights, float voxelArea) {
+    vec2 t[3] = cornerCoordinates(transform, texCoords);
+    float level = levelAcross(texelsPerVoxel(index, t, voxelArea));
+    return textureLod(colorTextures[index], weights.x * t[0] + weights.y * t[1] + weights.z * t[2], level);
 }
 
 // MASK over the voxel: 4 × 4 samples of the base colour over a voxel-sized square of the triangle's
 // plane around the voxel centre's projection (`planeWeights`; the coordinates run on past the
-// triangle), its sides along axes of the plane alone, so the triangles of one quad read the same
-// square wherever their edges cross the voxel,
-// each read at the level whose texels are as wide as its quarter of the square. Returns the mean colour of the samples whose alpha (× the factor's) reaches the
-// cutoff, and their share: as much of the voxel is there as of the surface the camera sees (a
-// fence's solid half opaque, its gap empty, where the material's share made every voxel of it half
-// opaque).
+// triangle), its sides along axes of the plane alone, so that the triangles of one quad read the
+// same square wherever their edges cross the voxel; each sample read at the level whose texels are
+// as wide as its quarter of the square. Returns the mean colour of the samples whose alpha (× the
+// factor's) reaches the cutoff, and their share: as much of the voxel is there as of the surface
+// the camera sees (a fence's solid half opaque, its gap empty, where the material's share made
+// every voxel of it half opaque).
 const int MASK_SAMPLES = 4;  // per side
 vec4 maskedOverVoxel(GpuMaterial material, vec4 texCoords[3], vec3 planeWeights, vec3 a, vec3 b, vec3 c,
                      float voxelArea) {
-    GpuTextureTransform transform = material.baseColorTransform;
-    vec2 t0 = transformedTexCoord(transform, texCoords[0].xy, texCoords[0].zw);
-    vec2 t1 = transformedTexCoord(transform, texCoords[1].xy, texCoords[1].zw);
-    vec2 t2 = transformedTexCoord(transform, texCoords[2].xy, texCoords[2].zw);
-    // How the coordinates change along two unit axes of the plane: p = a + s·e1 + t·e2 solved for
-    // (s, t) by the edges' Gram matrix. A degenerate triangle reads its one point.
+    int index = material.baseColorTexture;
+    vec2 t[3] = cornerCoordinates(material.baseColorTransform, texCoords);
+    // How the coordinates change along two unit axes of the plane. A degenerate triangle reads its
+    // one point.
     vec3 e1 = b - a, e2 = c - a;
-    float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
-    float denominator = d11 * d22 - d12 * d12;
     vec2 alongX = vec2(0.0f), alongY = vec2(0.0f);
-    if (denominator > 1e-12f * d11 * d22) {
-        // Axes from the plane alone (perpendicular.glsl), so the triangles of one quad share them.
+    if (spansPlane(e1, e2)) {
         vec3 normal = normalize(cross(e1, e2));
         vec3 axisX = perpendicularTo(normal);
         vec3 axisY = cross(normal, axisX);
-        vec2 stX = vec2(d22 * dot(e1, axisX) - d12 * dot(e2, axisX), d11 * dot(e2, axisX) - d12 * dot(e1, axisX));
-        vec2 stY = vec2(d22 * dot(e1, axisY) - d12 * dot(e2, axisY), d11 * dot(e2, axisY) - d12 * dot(e1, axisY));
-        alongX = (stX.x * (t1 - t0) + stX.y * (t2 - t0)) / denominator;
-        alongY = (stY.x * (t1 - t0) + stY.y * (t2 - t0)) / denominator;
+        mat2 coordinatesPerEdge = mat2(t[1] - t[0], t[2] - t[0]);
+        alongX = coordinatesPerEdge * edgeCoordinates(e1, e2, axisX);
+        alongY = coordinatesPerEdge * edgeCoordinates(e1, e2, axisY);
     }
-    vec2 size = vec2(textureSize(colorTextures[material.baseColorTexture], 0));
-    vec2 s1 = (t1 - t0) * size, s2 = (t2 - t0) * size;
-    float texelsPerSample = sqrt(abs(s1.x * s2.y - s1.y * s2.x) / max(voxelArea, 1e-20f)) / float(MASK_SAMPLES);
-    float level = texelsPerSample > 1.0f ? log2(texelsPerSample) : 0.0f;
-    vec2 centre = planeWeights.x * t0 + planeWeights.y * t1 + planeWeights.z * t2;
+    float level = levelAcross(texelsPerVoxel(index, t, voxelArea) / float(MASK_SAMPLES));
+    vec2 centre = planeWeights.x * t[0] + planeWeights.y * t[1] + planeWeights.z * t[2];
     vec3 colourSum = vec3(0.0f);
     float present = 0.0f;
     for (int i = 0; i < MASK_SAMPLES; ++i)
         for (int j = 0; j < MASK_SAMPLES; ++j) {
             vec2 offset = (vec2(i, j) + 0.5f) / float(MASK_SAMPLES) - 0.5f;
-            vec4 texel = textureLod(colorTextures[material.baseColorTexture],
-                                    centre + offset.x * alongX + offset.y * alongY, level);
+            vec4 texel = textureLod(colorTextures[index], centre + offset.x * alongX + offset.y * alongY, level);
             if (material.baseColorFactor.a * texel.a >= material.alphaCutoff) {
                 colourSum += texel.rgb;
                 present += 1.0f;

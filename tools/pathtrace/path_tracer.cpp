@@ -123,9 +123,7 @@ glsl::TextureAxes textureAxes(const TrianglePoint& point, const glsl::GpuTexture
     const glm::vec2 uv0 = texCoordOf(transform, *point.corners[0]);
     const glm::vec2 uv1 = texCoordOf(transform, *point.corners[1]) - uv0;
     const glm::vec2 uv2 = texCoordOf(transform, *point.corners[2]) - uv0;
-    const float determinant = uv1.x * uv2.y - uv2.x * uv1.y;
-    if (!(std::abs(determinant) > 1e-20f)) return {glm::vec3(0.0f), glm::vec3(0.0f)};
-    return {(uv2.y * e1 - uv1.y * e2) / determinant, (uv1.x * e2 - uv2.x * e1) / determinant};
+    return glsl::axesFromSteps(e1, e2, uv1, uv2);
 }
 
 bool hasTexture(const PathTracer& tracer, const TextureReference& reference) {
