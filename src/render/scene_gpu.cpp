@@ -63,7 +63,8 @@ void checkSceneCanBeRendered(const Scene& scene) {
     for (size_t i = 0; i < scene.vertices.size(); ++i) {
         const Vertex& vertex = scene.vertices[i];
         if (!finite(vertex.position) || !finite(vertex.normal) || !std::isfinite(vertex.u) ||
-            !std::isfinite(vertex.v) || !std::isfinite(vertex.uv1.x) || !std::isfinite(vertex.uv1.y))
+            !std::isfinite(vertex.v) || !std::isfinite(vertex.uv1.x) || !std::isfinite(vertex.uv1.y) ||
+            !finite(glm::vec3(vertex.tangent)) || !std::isfinite(vertex.tangent.w))
             fail("vertex " + std::to_string(i) + " holds a value that is not a finite number");
     }
     if (scene.indices.size() % 3 != 0) fail("the index count is not a multiple of 3");

@@ -23,10 +23,8 @@ bool keepsChannel(uint32_t channel, VoxelizeChannels channels) {
 
 // Whether a MASK material reads a base colour texture (voxelize.comp samples it over each voxel).
 bool hasMaskTextures(const Scene& scene) {
-    return std::any_of(scene.materials.begin(), scene.materials.end(), [&](const Material& material) {
-        const int texture = material.baseColorTexture.index;
-        return material.alphaMode == AlphaMode::Mask && texture >= 0 && size_t(texture) < scene.textures.size();
-    });
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [&](const Material& material) { return masksVoxelsByTexture(scene, material); });
 }
 
 // Tiles are kept when the triangle's separation from the tile's box is at most this (grid units):

@@ -95,9 +95,7 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
         if (!(coverage > 0.0)) continue;
         const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
         const glm::dvec3 albedo = glm::clamp(glm::dvec3(glm::vec3(material.baseColorFactor)), 0.0, 1.0);
-        const int texture = material.baseColorTexture.index;
-        const bool masked =
-            material.alphaMode == AlphaMode::Mask && texture >= 0 && size_t(texture) < scene.textures.size();
+        const bool masked = masksVoxelsByTexture(scene, material);
         // A material emits where its emissive texture's mean is not black, with its factor.
         const glm::dvec3 emission =
             emitsLight(scene, material) ? glm::max(glm::dvec3(material.emission), 0.0) : glm::dvec3(0.0);

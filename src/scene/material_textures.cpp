@@ -93,6 +93,11 @@ bool emitsLight(const Scene& scene, const Material& material) {
     return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f;
 }
 
+bool masksVoxelsByTexture(const Scene& scene, const Material& material) {
+    const int texture = material.baseColorTexture.index;
+    return material.alphaMode == AlphaMode::Mask && texture >= 0 && size_t(texture) < scene.textures.size();
+}
+
 float voxelCoverage(const Scene& scene, const Material& material) {
     if (material.alphaMode == AlphaMode::Opaque) return 1.0f;
     const float factor = material.baseColorFactor.a;

@@ -44,4 +44,8 @@ bool emitsLight(const Scene& scene, const Material& material);
 // skips a material whose share is 0; with a texture it reads each voxel's own footprint.
 float voxelCoverage(const Scene& scene, const Material& material);
 
+// Whether the voxelizer reads a MASK material's coverage from its base colour texture, over each
+// voxel's footprint (voxelize.comp), rather than voxelCoverage's one number.
+bool masksVoxelsByTexture(const Scene& scene, const Material& material);
+
 }  // namespace vct

@@ -142,6 +142,9 @@ TEST_F(Stress, NonFiniteValuesInACodeBuiltSceneAreRefusedWithAnError) {
     scene.vertices[2].u = nan;
     expectRefused(scene, "vertex 2");
     scene = cornell;
+    scene.vertices[4].tangent.w = nan;
+    expectRefused(scene, "vertex 4 holds a value that is not a finite number");
+    scene = cornell;
     scene.materials[1].emission.g = infinity;
     expectRefused(scene, "material 1 ('red') holds a value that is not a finite number");
     scene = cornell;
