@@ -105,13 +105,39 @@ TEST_F(MaterialTextures, MetallicRoughnessTextureScalesTheFactorsPerTexel) {
     }
 }
 
-// The samples of an 8-texel normal texture whose left half holds (tilt, 128, up) and right half
-// (128, tilt, up): tilted along +u, then up the image.
-std::vector<uint16_t> halfTiltedNormalTexels(uint8_t tilt, uint8_t up) {
+// An 8-texel normal texture whose left half tilts the normal 30° along +u (the texel (tilt, 128,
+// up)) and right half 30° up the image ((128, tilt, up)), on the quad's material.
+const uint8_t kTilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
+const uint8_t kUp = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
+const glm::vec3 kAlongU = glm::vec3(kTilt, 128, kUp) / 255.0f, kUpImage = glm::vec3(128, kTilt, kUp) / 255.0f;
+
+void useHalfTiltedNormalTexture(GltfBuilder& gltf) {
     std::vector<uint16_t> texels;
     for (uint32_t x = 0; x < 8; ++x)
-        texels.insert(texels.end(), {uint16_t(x < 4 ? tilt : 128), uint16_t(x < 4 ? 128 : tilt), up, 255});
-    return texels;
+        texels.insert(texels.end(), {uint16_t(x < 4 ? kTilt : 128), uint16_t(x < 4 ? 128 : kTilt), kUp, 255});
+    gltf.document["images"] =
+        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
+    gltf.document["textures"] = json::array({{{"source", 0}}});
+    gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
+}
+
+// The light the default sun gives the quad (albedo 0.8, facing +z) where the normal `texel` is read
+// in the frame (tangent, bitangent): L = E·max(n'·l, 0)·albedo/π.
+float tiltedNormalLight(glm::vec3 texel, glm::vec3 tangent, glm::vec3 bitangent) {
+    const glm::vec3 local = glm::normalize(texel * 2.0f - 1.0f);  // tangent x, bitangent y, normal z
+    const glm::vec3 normal = local.x * tangent + local.y * bitangent + local.z * glm::vec3(0, 0, 1);
+    const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
+    return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
+}
+
+// Every pixel of the image's left third is `left`, of its right third `right`.
+void expectHalves(const Image& image, float left, float right, const std::string& what) {
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x <= 10; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], left, kRelativeTolerance * left) << x << "," << y << " " << what;
+        for (uint32_t x = 21; x < kSize; ++x)
+            EXPECT_NEAR(image.pixel(x, y)[0], right, kRelativeTolerance * right) << x << "," << y << " " << what;
+    }
 }
 
 TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) {
@@ -120,42 +146,25 @@ TEST_F(MaterialTextures, NormalTextureTiltsTheShadingNormalAlongUAndUpTheImage) 
     // default sun: L = E·max(n'·l, 0)·albedo/π with n' the tilted normal, which a wrong sign on
     // either axis would tilt the other way. Mirrored (u = 1 − u, as the second half of a symmetric
     // model), the halves swap sides, +u tilts towards −x and up the image stays +y.
-    const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
-    const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
-    const std::vector<uint16_t> texels = halfTiltedNormalTexels(tilt, up);
     for (const bool mirrored : {false, true}) {
         GltfBuilder gltf = quadFacingCamera();
         if (mirrored) {
             const int uvs = gltf.addVec2({{1, 1}, {0, 1}, {0, 0}, {1, 0}});
             gltf.document["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = uvs;
         }
-        gltf.document["images"] =
-            json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
-        gltf.document["textures"] = json::array({{{"source", 0}}});
-        gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
+        useHalfTiltedNormalTexture(gltf);
         const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
 
-        const glm::vec3 alongPlusU = mirrored ? glm::vec3(-1, 0, 0) : glm::vec3(1, 0, 0);
-        auto expected = [&](glm::vec3 texel) {
-            const glm::vec3 local = glm::normalize(texel * 2.0f - 1.0f);  // tangent x, bitangent y, normal z
-            const glm::vec3 normal = local.x * alongPlusU + local.y * glm::vec3(0, 1, 0) + local.z * glm::vec3(0, 0, 1);
-            const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
-            return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
-        };
-        const float alongU = expected(glm::vec3(tilt, 128, up) / 255.0f);
-        const float upImage = expected(glm::vec3(128, tilt, up) / 255.0f);
+        const glm::vec3 alongPlusU = mirrored ? glm::vec3(-1, 0, 0) : glm::vec3(1, 0, 0), upTheImage(0, 1, 0);
+        const float alongU = tiltedNormalLight(kAlongU, alongPlusU, upTheImage);
+        const float upImage = tiltedNormalLight(kUpImage, alongPlusU, upTheImage);
         // Tilts the other way would give other light.
-        ASSERT_GT(std::abs(alongU - expected(glm::vec3(255 - tilt, 128, up) / 255.0f)), 0.2f * alongU);
-        ASSERT_GT(std::abs(upImage - expected(glm::vec3(128, 255 - tilt, up) / 255.0f)), 0.2f * upImage);
-        const float left = mirrored ? upImage : alongU, right = mirrored ? alongU : upImage;
-        for (uint32_t y = 0; y < kSize; ++y) {
-            for (uint32_t x = 0; x <= 10; ++x)
-                EXPECT_NEAR(image.pixel(x, y)[0], left, kRelativeTolerance * left)
-                    << x << "," << y << " mirrored " << mirrored;
-            for (uint32_t x = 21; x < kSize; ++x)
-                EXPECT_NEAR(image.pixel(x, y)[0], right, kRelativeTolerance * right)
-                    << x << "," << y << " mirrored " << mirrored;
-        }
+        const glm::vec3 againstU = glm::vec3(255 - kTilt, 128, kUp) / 255.0f;
+        const glm::vec3 downImage = glm::vec3(128, 255 - kTilt, kUp) / 255.0f;
+        ASSERT_GT(std::abs(alongU - tiltedNormalLight(againstU, alongPlusU, upTheImage)), 0.2f * alongU);
+        ASSERT_GT(std::abs(upImage - tiltedNormalLight(downImage, alongPlusU, upTheImage)), 0.2f * upImage);
+        expectHalves(image, mirrored ? upImage : alongU, mirrored ? alongU : upImage,
+                     mirrored ? "mirrored" : "not mirrored");
     }
 }
 
@@ -163,35 +172,18 @@ TEST_F(MaterialTextures, ANormalTextureFollowsTheFilesTangents) {
     // The quad and texture above, with a TANGENT along +y (handedness +1), a quarter turn from the
     // direction u increases in (+x): +u tilts towards +y, and up the image, the bitangent
     // cross(+z, +y) = -x, towards -x. Taken from the triangles' coordinates, the tilts were +x and +y.
-    const uint8_t tilt = uint8_t(std::lround((0.5 + 0.5 * std::sin(0.5235988)) * 255.0));
-    const uint8_t up = uint8_t(std::lround((0.5 + 0.5 * std::cos(0.5235988)) * 255.0));
-    const std::vector<uint16_t> texels = halfTiltedNormalTexels(tilt, up);
     GltfBuilder gltf = quadFacingCamera();
     const int tangents = gltf.addVec4({{0, 1, 0, 1}, {0, 1, 0, 1}, {0, 1, 0, 1}, {0, 1, 0, 1}});
     gltf.document["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = tangents;
-    gltf.document["images"] =
-        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(8, 1, 4, 8, texels))}}});
-    gltf.document["textures"] = json::array({{{"source", 0}}});
-    gltf.document["materials"][0]["normalTexture"] = {{"index", 0}};
+    useHalfTiltedNormalTexture(gltf);
     const Image image = renderLitQuad(gltf, {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}});
 
-    auto expected = [&](glm::vec3 texel, glm::vec3 tangent, glm::vec3 bitangent) {
-        const glm::vec3 local = glm::normalize(texel * 2.0f - 1.0f);
-        const glm::vec3 normal = local.x * tangent + local.y * bitangent + local.z * glm::vec3(0, 0, 1);
-        const float cosine = std::max(glm::dot(normal, -glm::normalize(kDefaultSunTravel)), 0.0f);
-        return kDefaultSunIlluminance * cosine * 0.8f / 3.14159265f;
-    };
-    const glm::vec3 alongU = glm::vec3(tilt, 128, up) / 255.0f, upImage = glm::vec3(128, tilt, up) / 255.0f;
-    const float left = expected(alongU, {0, 1, 0}, {-1, 0, 0}), right = expected(upImage, {0, 1, 0}, {-1, 0, 0});
+    const float left = tiltedNormalLight(kAlongU, {0, 1, 0}, {-1, 0, 0});
+    const float right = tiltedNormalLight(kUpImage, {0, 1, 0}, {-1, 0, 0});
     // The frame from the coordinates would give other light.
-    ASSERT_GT(std::abs(left - expected(alongU, {1, 0, 0}, {0, 1, 0})), 0.1f * left);
-    ASSERT_GT(std::abs(right - expected(upImage, {1, 0, 0}, {0, 1, 0})), 0.1f * right);
-    for (uint32_t y = 0; y < kSize; ++y) {
-        for (uint32_t x = 0; x <= 10; ++x)
-            EXPECT_NEAR(image.pixel(x, y)[0], left, kRelativeTolerance * left) << x << "," << y;
-        for (uint32_t x = 21; x < kSize; ++x)
-            EXPECT_NEAR(image.pixel(x, y)[0], right, kRelativeTolerance * right) << x << "," << y;
-    }
+    ASSERT_GT(std::abs(left - tiltedNormalLight(kAlongU, {1, 0, 0}, {0, 1, 0})), 0.1f * left);
+    ASSERT_GT(std::abs(right - tiltedNormalLight(kUpImage, {1, 0, 0}, {0, 1, 0})), 0.1f * right);
+    expectHalves(image, left, right, "with the file's tangents");
 }
 
 TEST_F(MaterialTextures, ATexturedWallBleedsItsTexturesColourIntoTheIndirectLight) {
