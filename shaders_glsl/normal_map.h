@@ -4,7 +4,8 @@
 // coordinates are not skewed: the tangent ∂position/∂u made perpendicular to the normal, the
 // bitangent ±cross(normal, tangent), the sign that of up the image (so mirrored coordinates, as a
 // symmetric model's two halves share one texture, tilt their normals the mirrored way). ∂position/∂u
-// and ∂v come from the file's TANGENT where it has one, else from each triangle's coordinates.
+// and ∂v come from the vertex tangent where there is one (the file's TANGENT, or generated on loading:
+// src/scene/tangent_generation.h), else from each triangle's coordinates.
 #ifndef VCT_NORMAL_MAP_H
 #define VCT_NORMAL_MAP_H
 

@@ -24,6 +24,7 @@
 #include "scene/gltf_json_checks.h"
 #include "scene/gltf_validate.h"
 #include "scene/load.h"
+#include "scene/tangent_generation.h"
 
 namespace vct {
 
@@ -697,7 +698,12 @@ struct Converter {
         }
 
         const bool mirrored = determinant < 0.0;  // a mirroring transform turns front faces into back faces
-        if (scene.vertices.size() + std::max(vertexCount, corners.size()) > UINT32_MAX)
+        // A normal texture read at TEXCOORD_0 follows vertex tangents; where the file gives none they
+        // are generated (and may split up to every vertex in two).
+        const TextureReference& normalTexture = scene.materials[material].normalTexture;
+        const bool generatesTangents = !normals.empty() && tangents.empty() && !uvs.empty() &&
+                                       normalTexture.index >= 0 && normalTexture.texCoord == 0;
+        if (scene.vertices.size() + std::max(vertexCount * (generatesTangents ? 2 : 1), corners.size()) > UINT32_MAX)
             throw Error(scene.name + ": " + path + ": the scene has more vertices than 32-bit indices can address");
         const uint32_t base = uint32_t(scene.vertices.size());
         if (!normals.empty()) scene.vertices.insert(scene.vertices.end(), vertices.begin(), vertices.end());
@@ -723,6 +729,8 @@ struct Converter {
             }
             scene.triangleMaterials.push_back(material);
         }
+        if (generatesTangents)
+            generateTangents(scene.vertices, scene.indices, scene.indices.size() - corners.size() / 3 * 3);
     }
 
     // A TANGENT in world space: its direction through the node's linear transform, and its

@@ -27,8 +27,9 @@ struct Vertex {
     float v = 0.0f;
     glm::vec2 uv1{0.0f};     // TEXCOORD_1; a file without one gets TEXCOORD_0 here
     glm::vec2 unused{0.0f};  // fills the third vec4
-    // The file's TANGENT in world space: xyz unit, along increasing u of TEXCOORD_0; w = ±1, the
-    // bitangent cross(normal, xyz)·w. All zero where the file has none (normal_map.h).
+    // The file's TANGENT in world space, or one generated where a normal texture needs it
+    // (tangent_generation.h): xyz unit, along increasing u of TEXCOORD_0; w = ±1, the bitangent
+    // cross(normal, xyz)·w. All zero where there is none (normal_map.h).
     glm::vec4 tangent{0.0f};
 };
 
