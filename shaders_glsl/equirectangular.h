@@ -1,7 +1,7 @@
 // Where an equirectangular environment image (--environment FILE.hdr) is read for a direction, the
 // same for the renderer and the reference path tracer: the image's centre column looks along −Z
 // (glTF's forward), u grows towards +X, and its top row is +Y. The column at u = 0 and 1 looks
-// along +Z, where the image wraps.
+// along +Z, where the image wraps. The image may be turned about +Y (--environment-rotation).
 #ifndef VCT_EQUIRECTANGULAR_H
 #define VCT_EQUIRECTANGULAR_H
 
@@ -12,9 +12,11 @@ VCT_SHARED_BEGIN
 // The binding of the environment image (sky.glsl) in every pass that traces cones or shows the sky.
 const uint SKY_BINDING = 30u;
 
-// (u, v) in [0, 1]² of the unit `direction`.
-SHARED_FN vec2 equirectangularCoordinates(vec3 direction) {
-    float u = 0.5f + atan(direction.x, -direction.z) * 0.15915494f;  // 1 / 2π
+// (u, v) of the unit `direction` in an image turned `turns` of a full turn about +Y, counter-clockwise
+// seen from above (a right-handed rotation: a quarter turn brings what the image shows along −Z to
+// −X). v is in [0, 1]; u in [0, 2), for a sampler that repeats it.
+SHARED_FN vec2 equirectangularCoordinates(vec3 direction, float turns) {
+    float u = 0.5f + atan(direction.x, -direction.z) * 0.15915494f + turns;  // 1 / 2π
     float v = acos(clamp(direction.y, -1.0f, 1.0f)) * 0.31830989f;   // 1 / π
     return vec2(u, v);
 }

@@ -112,7 +112,7 @@ struct FrameConstants {
     float coneStopOpacity;
     float diffuseCentreWeight;
     uint diffuseConeCount;
-    uint unused;          // keeps `environment` on 16 bytes
+    float environmentTurns;  // the environment image turned about +Y, in [0, 1) turns (equirectangular.h)
     uint debugVoxelMip;   // the mip level the voxel debug views show
     uint diffuseDownscale;  // diffuse cones traced once per diffuseDownscale² samples (1 = every sample)
     uint firstAreaLight;  // lights[firstAreaLight, lightCount) are the area lights, after the punctual ones

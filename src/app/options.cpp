@@ -142,6 +142,8 @@ std::vector<Option> makeSharedOptions() {
          "the sky every ray leaving the scene sees: a uniform radiance, or an equirectangular Radiance "
          "image (its centre looks along -Z, its top up) (default black; a scene without light gets a "
          "default sky with its default sun)"},
+        {"environment-rotation", "DEGREES",
+         "turn the --environment image about +Y, counter-clockwise seen from above (default 0)"},
         {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},
         {"validate", "", "enable the Khronos validation layer"},
         {"strict", "", "treat scene warnings (e.g. a missing texture) as errors"},

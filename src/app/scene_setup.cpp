@@ -29,6 +29,11 @@ SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
         overrides.environment = arguments.vector3("environment");
         if (overrides.environment) checkSkyRadiance(*overrides.environment);
     }
+    if (arguments.has("environment-rotation")) {
+        if (overrides.environmentImage.empty())
+            throw Error("--environment-rotation turns an environment image: give --environment FILE.hdr too");
+        overrides.environmentRotation = glm::radians(arguments.number("environment-rotation", 0.0f, -3600.0f, 3600.0f));
+    }
     return overrides;
 }
 
@@ -60,6 +65,7 @@ Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits
     // sets the default sun's.
     if (overrides.environment) scene.environment = *overrides.environment;
     if (!overrides.environmentImage.empty()) useEnvironmentImage(scene, loadEnvironmentImage(overrides));
+    scene.environmentRotation = overrides.environmentRotation;
     if (!overrides.lightDirection) addDefaultSunAndSkyIfUnlit(scene);
     applySceneOverrides(overrides, scene);
     return scene;

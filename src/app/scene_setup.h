@@ -13,8 +13,8 @@
 
 namespace vct {
 
-// --camera-pos/--camera-target/--fov, --light-dir/--light-intensity and --environment, read and checked before
-// the scene loads.
+// --camera-pos/--camera-target/--fov, --light-dir/--light-intensity and --environment with
+// --environment-rotation, read and checked before the scene loads.
 struct SceneOverrides {
     std::optional<glm::vec3> cameraPosition, cameraTarget;
     std::optional<float> yfovDegrees;
@@ -22,6 +22,7 @@ struct SceneOverrides {
     std::optional<float> lightIntensity;
     std::optional<glm::vec3> environment;  // finite, not negative
     std::string environmentImage;          // --environment FILE.hdr: the sky's image (the file exists)
+    float environmentRotation = 0.0f;      // --environment-rotation, radians (Scene::environmentRotation)
 };
 SceneOverrides sceneOverridesFromArguments(const Arguments& arguments);
 

@@ -112,6 +112,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     options.scene = loadSceneFromArguments(arguments);
     options.environment = sceneOverridesFromArguments(arguments).environment;
     options.environmentMap = options.scene.environmentMap;  // read once, for every scene opened
+    options.environmentRotation = options.scene.environmentRotation;
     printSceneWarnings(options.scene);
     return runViewer(std::move(options));
 }

@@ -80,6 +80,7 @@ void Renderer::setGeometry(const Scene& scene) {
     areaLights_ = findAreaLights(local);
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     environment_ = scene.environment;
+    environmentRotation_ = scene.environmentRotation;
     sky_ = std::make_unique<SkyImage>(context_, scene.environmentMap.get());
     skyMean_ = scene.environmentMap ? meanEnvironmentRadiance(*scene.environmentMap) : glm::vec3(1.0f);
     brightestEmission_ = 0.0f;
@@ -168,6 +169,12 @@ void Renderer::setEnvironment(glm::vec3 environment) {
     relight();  // the storage scale may change with it, and the light converges again
 }
 
+void Renderer::setEnvironmentRotation(float radians) {
+    if (radians == environmentRotation_) return;
+    environmentRotation_ = radians;
+    relight();  // the cones leaving the grid see another sky
+}
+
 void Renderer::setShading(const ShadingSettings& shading) {
     // Other cones gather other light: the reduced diffuse light of the last frames no longer holds.
     if (diffuseConesPass_ && shading != settings_.shading) diffuseConesPass_->forgetHistory();
@@ -222,6 +229,7 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
     constants.environment = glm::vec4(environment_, sky_->mapped() ? 1.0f : 0.0f);
+    constants.environmentTurns = environmentTurns(environmentRotation_);
     std::memcpy(frameConstants_.mapped, &constants, sizeof(constants));
     return constants.viewProjection;
 }

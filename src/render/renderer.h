@@ -69,6 +69,10 @@ public:
     // converges the light again, as setLights.
     void setEnvironment(glm::vec3 environment);
     glm::vec3 environment() const { return environment_; }
+    // How far the environment image is turned about +Y (Scene::environmentRotation); a change
+    // converges the light again.
+    void setEnvironmentRotation(float radians);
+    float environmentRotation() const { return environmentRotation_; }
     const RenderSettings& settings() const { return settings_; }
     // Changes that need no new images or voxels (a new image size is resize(); new resources
     // need a new Renderer).
@@ -120,6 +124,7 @@ private:
     Camera camera_;
     std::vector<Light> lights_;
     glm::vec3 environment_{0.0f};        // Scene::environment
+    float environmentRotation_ = 0.0f;   // Scene::environmentRotation
     std::unique_ptr<SkyImage> sky_;      // Scene::environmentMap, or the placeholder
     glm::vec3 skyMean_{1.0f};            // the environment image's mean radiance (1 without one)
     std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame

@@ -65,10 +65,17 @@ bool namesEnvironmentImage(const std::string& value) {
     return extension == ".hdr";
 }
 
-glm::vec3 environmentRadiance(const EnvironmentMap& map, const glm::vec3& direction) {
+float environmentTurns(float rotation) {
+    const double turns = double(rotation) / (2.0 * M_PI);
+    return float(turns - std::floor(turns));
+}
+
+glm::vec3 environmentRadiance(const EnvironmentMap& map, const glm::vec3& direction, float rotation) {
     if (map.width == 0 || map.height == 0) return glm::vec3(0.0f);
     // Texel centres sit at (i + ½)/size, as a GPU sampler places them.
-    const glm::vec2 at = glsl::equirectangularCoordinates(direction) * glm::vec2(map.width, map.height) - 0.5f;
+    const glm::vec2 at =
+        glsl::equirectangularCoordinates(direction, environmentTurns(rotation)) * glm::vec2(map.width, map.height) -
+        0.5f;
     const glm::vec2 low = glm::floor(at), t = at - low;
     // Around the horizon the image wraps; at the poles it ends (as the renderer's sampler).
     const uint32_t x0 = wrapTexel(low.x, map.width, TextureWrap::Repeat);

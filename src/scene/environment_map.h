@@ -32,9 +32,13 @@ void checkEnvironmentImageExists(const std::string& path);
 // kMaxEnvironmentTexels, or a texel that is negative or not finite is a vct::Error naming the file.
 EnvironmentMap loadEnvironmentMap(const std::string& path);
 
-// The radiance seen along the unit `direction`: bilinear between the four nearest texels, wrapping
-// around in u and clamped at the poles, as the renderer's sampler reads level 0.
-glm::vec3 environmentRadiance(const EnvironmentMap& map, const glm::vec3& direction);
+// The radiance seen along the unit `direction` with the image turned `rotation` radians about +Y
+// (Scene::environmentRotation): bilinear between the four nearest texels, wrapping around in u and
+// clamped at the poles, as the renderer's sampler reads level 0.
+glm::vec3 environmentRadiance(const EnvironmentMap& map, const glm::vec3& direction, float rotation);
+
+// A rotation about +Y in radians as the shaders take it: turns, in [0, 1) (equirectangular.h).
+float environmentTurns(float rotation);
 
 // Whether an --environment value names an image (a path ending in .hdr, any case) rather than a
 // uniform radiance R,G,B.

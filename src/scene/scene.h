@@ -146,7 +146,10 @@ struct Scene {
     // With an environment image, the factor its radiance is multiplied by (1 as loaded).
     glm::vec3 environment{0.0f};
     std::shared_ptr<const EnvironmentMap> environmentMap;  // --environment FILE.hdr; shared, never copied
-    std::vector<std::string> warnings;                     // non-fatal problems met while loading
+    // How far the environment image is turned about +Y, in radians, counter-clockwise seen from above
+    // (--environment-rotation; equirectangular.h).
+    float environmentRotation = 0.0f;
+    std::vector<std::string> warnings;  // non-fatal problems met while loading
 
     size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;

@@ -86,6 +86,8 @@ void drawLightsSection(ViewerState& state) {
         ImGui::ColorEdit3(state.skyImage.empty() ? "radiance" : "factor", &state.environment.x,
                           ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
         state.environment = glm::max(state.environment, glm::vec3(0.0f));
+        // Turned about +Y, counter-clockwise seen from above (--environment-rotation).
+        if (!state.skyImage.empty()) ImGui::SliderAngle("rotation", &state.skyRotation, -180.0f, 180.0f);
         ImGui::TreePop();
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);

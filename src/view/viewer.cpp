@@ -276,6 +276,7 @@ bool Viewer::loadScene(const std::string& name) {
     if (loaded.cameras.empty()) loaded.cameras.push_back(defaultCamera(loaded.bounds()));
     if (options_.environment) loaded.environment = *options_.environment;
     useEnvironmentImage(loaded, options_.environmentMap);
+    loaded.environmentRotation = options_.environmentRotation;
     addDefaultSunAndSkyIfUnlit(loaded);  // as `vct render` would light it
     Scene previous = std::move(scene_);
     scene_ = std::move(loaded);
@@ -317,6 +318,7 @@ void Viewer::showScene() {
     state_.lights = scene_.lights;
     state_.environment = scene_.environment;
     state_.skyImage = scene_.environmentMap ? scene_.environmentMap->name : std::string();
+    state_.skyRotation = scene_.environmentRotation;
     state_.materials = scene_.materials;
     state_.sceneSize = std::max(glm::length(scene_.bounds().extent()), 1e-3f);
     const Light& sun = scene_.lights.at(state_.sunIndex);
@@ -521,6 +523,10 @@ void Viewer::applyLightEdits() {
     }
     if (state_.environment != renderer_->environment()) {
         renderer_->setEnvironment(state_.environment);
+        imageStale_ = true;
+    }
+    if (state_.skyRotation != renderer_->environmentRotation()) {
+        renderer_->setEnvironmentRotation(state_.skyRotation);
         imageStale_ = true;
     }
     if (state_.lights == renderer_->lights()) return;

@@ -19,6 +19,7 @@ struct ViewerOptions {
     std::string sceneName;
     std::optional<glm::vec3> environment;  // --environment: the sky of every scene opened, dropped ones too
     std::shared_ptr<const EnvironmentMap> environmentMap;  // --environment FILE.hdr, likewise
+    float environmentRotation = 0.0f;                      // --environment-rotation (radians), likewise
     RenderSettings settings;                               // width and height: the window's initial size
     // Used instead of `settings` on a software rasterizer, where those would not be interactive
     // (none: `settings` everywhere).

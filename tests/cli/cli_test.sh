@@ -349,7 +349,13 @@ case "$case_name" in
     "$vct" render "${small[@]}" --environment "$work/sky.hdr" --out "$work/sky.pfm" \
       >"$work/stdout" 2>"$work/stderr" || fail "render failed"
     [ -s "$work/sky.pfm" ] || fail "no image"
-    echo "ok: rendered under an environment image" ;;
+    "$vct" render "${small[@]}" --environment "$work/sky.hdr" --environment-rotation -90 --out "$work/turned.pfm" \
+      >"$work/stdout" 2>"$work/stderr" || fail "render with a turned image failed"
+    echo "ok: rendered under an environment image, turned and not" ;;
+  environment-rotation-without-an-image)
+    expect_refusal_before_any_work render \
+      "\-\-environment-rotation turns an environment image: give \-\-environment FILE.hdr too" \
+      --environment 0.1,0.2,0.3 --environment-rotation 90 --out "$good" ;;
   help-names-every-option-once)
     # The help is made from the option table: each option appears once, settings with their default.
     "$vct" render --help >"$work/stdout" 2>"$work/stderr" || fail "--help failed"

@@ -21,7 +21,7 @@ using test::TempFolder;
 
 TEST(Equirectangular, TheCentreLooksAlongMinusZWithPlusXToTheRightAndUpOnTop) {
     auto expectAt = [](glm::vec3 direction, glm::vec2 expected) {
-        const glm::vec2 uv = glsl::equirectangularCoordinates(glm::normalize(direction));
+        const glm::vec2 uv = glsl::equirectangularCoordinates(glm::normalize(direction), 0.0f);
         EXPECT_NEAR(uv.x, expected.x, 1e-6f) << direction.x << "," << direction.y << "," << direction.z;
         EXPECT_NEAR(uv.y, expected.y, 1e-6f) << direction.x << "," << direction.y << "," << direction.z;
     };
@@ -29,8 +29,8 @@ TEST(Equirectangular, TheCentreLooksAlongMinusZWithPlusXToTheRightAndUpOnTop) {
     expectAt({1, 0, 0}, {0.75f, 0.5f});
     expectAt({-1, 0, 0}, {0.25f, 0.5f});
     // At the poles every u is the same direction: only v is asked.
-    EXPECT_EQ(glsl::equirectangularCoordinates(glm::vec3(0, 1, 0)).y, 0.0f);
-    EXPECT_NEAR(glsl::equirectangularCoordinates(glm::vec3(0, -1, 0)).y, 1.0f, 1e-6f);
+    EXPECT_EQ(glsl::equirectangularCoordinates(glm::vec3(0, 1, 0), 0.0f).y, 0.0f);
+    EXPECT_NEAR(glsl::equirectangularCoordinates(glm::vec3(0, -1, 0), 0.0f).y, 1.0f, 1e-6f);
     expectAt({0, 1, -1}, {0.5f, 0.25f});
     // A cone as wide as a texel reads level 0, one twice as wide level 1.
     const float texel = 2.0f * 3.14159265f / 1024.0f;
@@ -38,15 +38,31 @@ TEST(Equirectangular, TheCentreLooksAlongMinusZWithPlusXToTheRightAndUpOnTop) {
     EXPECT_NEAR(glsl::equirectangularLevel(std::tan(texel), 1024.0f), 1.0f, 1e-3f);
 }
 
+TEST(Equirectangular, ATurnedImageShowsAlongADirectionWhatItShowedThatFarRoundBefore) {
+    // A quarter turn counter-clockwise seen from above brings what the image showed along −Z (its
+    // centre) to −X, and what it showed along +X to −Z; the turn in radians wraps to [0, 1) turns.
+    EXPECT_NEAR(glsl::equirectangularCoordinates(glm::vec3(-1, 0, 0), 0.25f).x, 0.5f, 1e-6f);
+    EXPECT_NEAR(glsl::equirectangularCoordinates(glm::vec3(0, 0, -1), 0.25f).x, 0.75f, 1e-6f);
+    EXPECT_NEAR(environmentTurns(0.5f * 3.14159265f), 0.25f, 1e-6f);
+    EXPECT_NEAR(environmentTurns(-0.5f * 3.14159265f), 0.75f, 1e-6f);
+    EXPECT_NEAR(environmentTurns(4.5f * 3.14159265f), 0.25f, 1e-6f);
+    const auto map = test::redLeftGreenRightSky();
+    const glm::vec3 ahead = glm::normalize(glm::vec3(0, 0.5f, -1));
+    EXPECT_EQ(environmentRadiance(*map, ahead, 0.5f * 3.14159265f), glm::vec3(0, 1, 0)) << "+X's green ahead";
+    EXPECT_EQ(environmentRadiance(*map, ahead, -0.5f * 3.14159265f), glm::vec3(1, 0, 0)) << "-X's red ahead";
+    const glm::vec3 right = glm::normalize(glm::vec3(1, 0.5f, -1));
+    EXPECT_EQ(environmentRadiance(*map, right, 3.14159265f), glm::vec3(1, 0, 0)) << "half a turn swaps the halves";
+}
+
 TEST(EnvironmentMap, ADirectionReadsItsTexelAndBlendsBilinearlyBetweenCentres) {
     const auto map = test::redLeftGreenRightSky();
-    const glm::vec3 left = environmentRadiance(*map, glm::normalize(glm::vec3(-1, 0.5f, -1)));
-    const glm::vec3 right = environmentRadiance(*map, glm::normalize(glm::vec3(1, 0.5f, -1)));
+    const glm::vec3 left = environmentRadiance(*map, glm::normalize(glm::vec3(-1, 0.5f, -1)), 0.0f);
+    const glm::vec3 right = environmentRadiance(*map, glm::normalize(glm::vec3(1, 0.5f, -1)), 0.0f);
     EXPECT_EQ(left, glm::vec3(1, 0, 0));
     EXPECT_EQ(right, glm::vec3(0, 1, 0));
-    EXPECT_EQ(environmentRadiance(*map, glm::vec3(0, -1, 0)), glm::vec3(0.0f));
+    EXPECT_EQ(environmentRadiance(*map, glm::vec3(0, -1, 0), 0.0f), glm::vec3(0.0f));
     // On the meridian, u = ½, half way between the centres of texels 31 and 32.
-    const glm::vec3 meridian = environmentRadiance(*map, glm::normalize(glm::vec3(0, 0.5f, -1)));
+    const glm::vec3 meridian = environmentRadiance(*map, glm::normalize(glm::vec3(0, 0.5f, -1)), 0.0f);
     EXPECT_NEAR(meridian.r, 0.5f, 1e-5f);
     EXPECT_NEAR(meridian.g, 0.5f, 1e-5f);
     // Half the sphere is black, the upper half half red and half green.
@@ -96,13 +112,18 @@ TEST(PathTracerEnvironment, ARayLeavingTheSceneSeesTheImageAlongItsDirection) {
     scene.name = "nothing but sky";
     scene.environment = glm::vec3(2.0f);  // the factor on the image
     scene.environmentMap = test::redLeftGreenRightSky();
-    const pt::PathTracer tracer = pt::createPathTracer(scene);
-    pt::Rng rng = pt::Rng::forSample(1, 0, 0);
-    for (const glm::vec3 direction : {glm::vec3(-1, 0.3f, -1), glm::vec3(1, 0.3f, -1), glm::vec3(0.2f, -1, 0.4f)}) {
-        const glm::vec3 unit = glm::normalize(direction);
-        const glm::vec3 seen = pt::tracePath(tracer, pt::Ray{glm::vec3(0.0f), unit, 1e30f}, pt::Component::Full, rng);
-        const glm::vec3 expected = 2.0f * environmentRadiance(*scene.environmentMap, unit);
-        EXPECT_EQ(seen, expected) << direction.x << "," << direction.y << "," << direction.z;
+    for (const float rotation : {0.0f, 2.0f}) {  // turned about +Y by `rotation` radians
+        scene.environmentRotation = rotation;
+        const pt::PathTracer tracer = pt::createPathTracer(scene);
+        pt::Rng rng = pt::Rng::forSample(1, 0, 0);
+        for (const glm::vec3 direction : {glm::vec3(-1, 0.3f, -1), glm::vec3(1, 0.3f, -1), glm::vec3(0.2f, -1, 0.4f)}) {
+            const glm::vec3 unit = glm::normalize(direction);
+            const glm::vec3 seen =
+                pt::tracePath(tracer, pt::Ray{glm::vec3(0.0f), unit, 1e30f}, pt::Component::Full, rng);
+            const glm::vec3 expected = 2.0f * environmentRadiance(*scene.environmentMap, unit, rotation);
+            EXPECT_EQ(seen, expected) << direction.x << "," << direction.y << "," << direction.z << " turned "
+                                      << rotation;
+        }
     }
 }
 

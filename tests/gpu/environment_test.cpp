@@ -188,6 +188,7 @@ TEST_F(Environment, TheCameraSeesTheImageWhereItsDirectionsPoint) {
     // Looking along −Z over the plane with a 30° view: the sky above the horizon is red on the left
     // (x < 0) and green on the right, as the image's halves (the path tracer reads the same); the
     // ±3° around the meridian blend the two, and the rows near the horizon the black below it.
+    // Turned (--environment-rotation), the image is seen where the turn takes its directions.
     Scene scene = planeUnderTheSky(Material{});
     scene.environment = glm::vec3(1.0f);
     scene.environmentMap = redLeftGreenRightSky();
@@ -197,15 +198,24 @@ TEST_F(Environment, TheCameraSeesTheImageWhereItsDirectionsPoint) {
     camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     camera.yfov = glm::radians(30.0f);
     Renderer renderer(gpu(), scene, smallSettings(RenderMode::Direct));
-    renderer.renderFrame();
-    const Image image = renderer.readImage();
-    for (uint32_t y = 0; y < 10; ++y)
-        for (uint32_t x = 0; x < 32; ++x) {
-            if (x >= 12 && x < 20) continue;
-            const glm::vec3 seen = glm::make_vec3(image.pixel(x, y));
-            const glm::vec3 expected = x < 16 ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-            for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], expected[c], 1e-3f) << x << "," << y << " channel " << c;
-        }
+    // Turned half way round the halves swap; a quarter turn counter-clockwise seen from above
+    // brings what the image showed along +X, green, ahead (the other way round, red).
+    constexpr float kQuarterTurn = 1.57079633f;
+    for (const float turn : {0.0f, 2.0f * kQuarterTurn, kQuarterTurn, -kQuarterTurn}) {
+        renderer.setEnvironmentRotation(turn);
+        renderer.renderFrame();
+        const Image image = renderer.readImage();
+        for (uint32_t y = 0; y < 10; ++y)
+            for (uint32_t x = 0; x < 32; ++x) {
+                const bool halves = turn == 0.0f || turn == 2.0f * kQuarterTurn;  // the meridian ahead
+                if (halves && x >= 12 && x < 20) continue;
+                const bool red = halves ? (x < 16) == (turn == 0.0f) : turn < 0.0f;
+                const glm::vec3 seen = glm::make_vec3(image.pixel(x, y));
+                const glm::vec3 expected = red ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(seen[c], expected[c], 1e-3f) << x << "," << y << " channel " << c << " turned " << turn;
+            }
+    }
 }
 
 }  // namespace

@@ -37,6 +37,8 @@ constexpr const char* kUsage =
     "                            vct render (default black; a scene without light gets the default sun\n"
     "                            and sky). The sky camera rays meet is direct light, the sky's light on\n"
     "                            surfaces indirect\n"
+    "  --environment-rotation DEGREES\n"
+    "                            turn the environment image about +Y, counter-clockwise seen from above\n"
     "  --camera-pos x,y,z --camera-target x,y,z --fov DEGREES\n"
     "                            override the scene's first camera (+Y up, vertical field of view)\n"
     "Writes FILE.pfm (linear radiance; .png also works) and FILE.json (spp, seconds, noise).\n";
@@ -50,6 +52,7 @@ struct Options {
     std::optional<uint32_t> maxDepth;
     std::optional<glm::vec3> environment;
     std::string environmentImage;  // --environment FILE.hdr
+    std::optional<float> environmentRotationDegrees;
 };
 
 template <typename T>
@@ -100,6 +103,8 @@ Options parseOptions(int argc, char** argv) {
         else if (option == "--fov") options.fovDegrees = parseNumber<float>(option, value);
         else if (option == "--environment" && vct::namesEnvironmentImage(value)) options.environmentImage = value;
         else if (option == "--environment") options.environment = parseVector(option, value);
+        else if (option == "--environment-rotation")
+            options.environmentRotationDegrees = parseNumber<float>(option, value);
         else if (option == "--mode") {
             if (value == "full") s.component = pt::Component::Full;
             else if (value == "direct") s.component = pt::Component::Direct;
@@ -116,6 +121,12 @@ Options parseOptions(int argc, char** argv) {
     }
     if (s.samplesPerPixel == 0) throw Error("--spp must be at least 1");
     if (options.environment) vct::checkSkyRadiance(*options.environment);
+    if (options.environmentRotationDegrees) {
+        if (options.environmentImage.empty())
+            throw Error("--environment-rotation turns an environment image: give --environment FILE.hdr too");
+        if (!std::isfinite(*options.environmentRotationDegrees))
+            throw Error("--environment-rotation must be a finite number of degrees");
+    }
     if (options.fovDegrees && !(*options.fovDegrees > 0.0f && *options.fovDegrees < 180.0f)) {
         throw Error("--fov must be between 0 and 180 degrees");
     }
@@ -162,6 +173,8 @@ int run(int argc, char** argv) {
     if (!options.environmentImage.empty())
         vct::useEnvironmentImage(
             scene, std::make_shared<const vct::EnvironmentMap>(vct::loadEnvironmentMap(options.environmentImage)));
+    if (options.environmentRotationDegrees)
+        scene.environmentRotation = glm::radians(*options.environmentRotationDegrees);
     vct::addDefaultSunAndSkyIfUnlit(scene);  // the light `vct render` gives a scene without any
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     options.settings.camera = chooseCamera(scene, options);

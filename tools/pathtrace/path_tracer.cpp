@@ -313,8 +313,9 @@ bool unoccluded(const PathTracer& tracer, const SurfacePoint& s, const glm::vec3
 
 // The sky seen along `direction`: Scene::environment, times the environment image where there is one.
 glm::vec3 skyRadiance(const Scene& scene, const glm::vec3& direction) {
-    return scene.environmentMap ? scene.environment * environmentRadiance(*scene.environmentMap, direction)
-                                : scene.environment;
+    return scene.environmentMap
+               ? scene.environment * environmentRadiance(*scene.environmentMap, direction, scene.environmentRotation)
+               : scene.environment;
 }
 
 // Light from the punctual lights, by KHR_lights_punctual's falloff (shaders_glsl/lights.h).
