@@ -116,24 +116,23 @@ vec4 hidesLight(vec4 inFront, float tapDistance, float ownSurface, float texelWo
            vec4(lessThanEqual(vec4(tapDistance * texelWorld), reach));
 }
 
-// AREA_SHADOW_TAPS points on a golden-angle spiral over the unit disc: √((i + ½)/n) at i · 137.5°.
-const vec2 AREA_SHADOW_SPIRAL[AREA_SHADOW_TAPS] = vec2[](
-    vec2(0.176777f, 0.000000f),
-    vec2(-0.225772f, 0.206826f),
-    vec2(0.034558f, -0.393771f),
-    vec2(0.284571f, 0.371173f),
-    vec2(-0.522223f, -0.092374f),
-    vec2(0.494695f, -0.314685f),
-    vec2(-0.165466f, 0.615525f),
-    vec2(-0.315561f, -0.607594f),
-    vec2(0.684642f, 0.250030f),
-    vec2(-0.712256f, 0.294009f),
-    vec2(0.343355f, -0.733729f),
-    vec2(0.253730f, 0.808932f),
-    vec2(-0.764746f, -0.443186f),
-    vec2(0.897134f, -0.197232f),
-    vec2(-0.547507f, 0.778772f),
-    vec2(-0.126487f, -0.976090f));
+// AREA_SHADOW_TAPS points on a golden-angle spiral over the unit disc, √((i + ½)/n) out at i · 137.5°
+// from a first direction, walked one golden angle at a time. A constant table of the points, indexed
+// in the loops, made lavapipe's tile-room shading pass (48 area lights a pixel) take 49 ms against 34
+// ms walking (128², median of 3 alternated bench runs): it seemingly filled the table on every call.
+const float GOLDEN_COS = -0.73736888f, GOLDEN_SIN = 0.67549029f;  // of 137.5077°
+struct SpiralWalk {
+    vec2 direction;  // unit: of the next point
+    int index;
+};
+
+vec2 nextSpiralPoint(inout SpiralWalk walk) {
+    vec2 point = walk.direction * sqrt((float(walk.index) + 0.5f) / float(AREA_SHADOW_TAPS));
+    walk.direction = vec2(GOLDEN_COS * walk.direction.x - GOLDEN_SIN * walk.direction.y,
+                          GOLDEN_SIN * walk.direction.x + GOLDEN_COS * walk.direction.y);
+    ++walk.index;
+    return point;
+}
 
 // The distance along a perspective view's axis of a depth stored in its map.
 vec4 viewDepth(ShadowView view, vec4 stored) {
@@ -150,7 +149,7 @@ float areaLightShadow(GpuLight light, ShadowView view, vec3 position, vec3 norma
     float reachRadius = light.positionRange.w;  // every corner of the light lies within it
     // Interleaved gradient noise (Jimenez 2014) of the shadow-map texel turns the spiral.
     float turn = 6.2831853f * fract(52.9829189f * fract(dot(floor(centre.xy / texel), vec2(0.06711056f, 0.00583715f))));
-    mat2 rotation = mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
+    vec2 firstDirection = vec2(cos(turn), sin(turn));
     float ownSurface = 1.5f * texelWorld;
     // View depths turn into distances along the ray to the light's centre by this factor.
     float alongRay = distanceToLight / max((view.viewProjection * vec4(position, 1.0f)).w, 1e-20f);
@@ -159,8 +158,9 @@ float areaLightShadow(GpuLight light, ShadowView view, vec3 position, vec3 norma
     float blockerDistance = 0.0f;
     float nearestBlocker = distanceToLight;
     float blockers = 0.0f;
+    SpiralWalk search = SpiralWalk(firstDirection, 0);
     for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
-        vec2 tap = (rotation * AREA_SHADOW_SPIRAL[i]) * searchRadius;
+        vec2 tap = nextSpiralPoint(search) * searchRadius;
         vec2 offset = tap * texel;
         vec3 coordinate = vec3(centre.xy + offset, layer);
         vec4 stored = textureGather(areaShadowDepths, coordinate, 0);
@@ -185,8 +185,9 @@ float areaLightShadow(GpuLight light, ShadowView view, vec3 position, vec3 norma
     // horizon, which its irradiance already leaves out, must not count as shadowed.
     float lit = 0.0f;
     float total = 0.0f;
+    SpiralWalk rays = SpiralWalk(firstDirection, 0);
     for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
-        vec2 onDisc = (rotation * AREA_SHADOW_SPIRAL[i]) * discRadius;
+        vec2 onDisc = nextSpiralPoint(rays) * discRadius;
         vec3 toSample = eye + tangent * onDisc.x + bitangent * onDisc.y - position;
         float sampleDistance = length(toSample);
         float weight = max(dot(toSample, normal), 0.0f) / sampleDistance;
