@@ -43,17 +43,6 @@ uint32_t mortonCode(const glm::vec3& position, const Bounds& bounds) {
     return code;
 }
 
-// A triangle's radiance: its material's emission × the mean of the emissive texture over the
-// triangle's own texture coordinates, so a model whose one texture atlas glows in a few places
-// gets lights there and nowhere else.
-glm::vec3 triangleRadiance(const Scene& scene, const Material& material, const Vertex* const v[3]) {
-    const TextureReference& texture = material.emissiveTexture;
-    if (texture.index < 0 || size_t(texture.index) >= scene.textures.size()) return material.emission;
-    const glm::vec2 uv[3] = {textureCoordinates(texture, *v[0]), textureCoordinates(texture, *v[1]),
-                             textureCoordinates(texture, *v[2])};
-    return material.emission * meanLinearColorOverTriangle(scene.textures[size_t(texture.index)], uv);
-}
-
 std::vector<Emitter> emissiveTriangles(const Scene& scene, std::vector<uint32_t>& sourceTriangle) {
     std::vector<Emitter> emitters;
     for (size_t t = 0; t < scene.triangleCount(); ++t) {
@@ -61,7 +50,9 @@ std::vector<Emitter> emissiveTriangles(const Scene& scene, std::vector<uint32_t>
         if (!(std::max({material.emission.r, material.emission.g, material.emission.b}) > 0.0f)) continue;
         const Vertex* v[3] = {&scene.vertices[scene.indices[3 * t]], &scene.vertices[scene.indices[3 * t + 1]],
                               &scene.vertices[scene.indices[3 * t + 2]]};
-        const glm::vec3 radiance = triangleRadiance(scene, material, v);
+        // The emissive texture's mean over the triangle's own coordinates, so a model whose one texture
+        // atlas glows in a few places gets lights there and nowhere else; holes emit nothing.
+        const glm::vec3 radiance = emittedRadianceOverTriangle(scene, material, v);
         if (!(std::max({radiance.r, radiance.g, radiance.b}) > 0.0f)) continue;
         Emitter emitter;
         emitter.triangle.radiance = radiance;

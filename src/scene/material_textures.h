@@ -30,6 +30,16 @@ glm::vec3 meanLinearColor(const Texture& texture);
 // empty texture.
 glm::vec3 meanLinearColorOverTriangle(const Texture& texture, const glm::vec2 uv[3]);
 
+// The surface's share at a point where the base colour's alpha (factor × texture) is `alpha`, as
+// glTF's alphaMode says: Opaque 1; Mask 1 where alpha reaches alphaCutoff, else 0 (a hole); Blend alpha.
+float coverageOfAlpha(const Material& material, float alpha);
+
+// The mean radiance the triangle (corners v[0..2]) emits from its front face: emission × its emissive
+// texture × its coverage (coverageOfAlpha, from the base colour's alpha) at each point, averaged as
+// meanLinearColorOverTriangle averages, over both textures' coordinates. A MASK emitter's holes and
+// a BLEND emitter's transparent parts emit nothing, as the camera and the path tracer see through them.
+glm::vec3 emittedRadianceOverTriangle(const Scene& scene, const Material& material, const Vertex* const v[3]);
+
 // The radiance the voxelizer gives the material's surfaces: emission × the mean of its emissive
 // texture. An approximation: the voxels of a surface whose texture glows in a few places glow
 // evenly and faintly, with the same total power (for a texture mapped once over the surface).

@@ -172,5 +172,50 @@ TEST(EmissiveTextureMean, OnlyTheTrianglesMappedOntoTheGlowBecomeLights) {
     EXPECT_NEAR(lights[0].meanRadiance.g, 3.0f, 1e-5f);
 }
 
+// One emissive quad under the ceiling (y = 2, glowing down with radiance 3, uv over [0, 1]²) whose
+// base colour texture is opaque on its right half (u ≥ ½) and transparent on its left: a lamp
+// shade's cut-out, say.
+Scene halfCutOutLamp(AlphaMode mode) {
+    Scene scene;
+    scene.name = "cut-out lamp";
+    Texture texture;
+    texture.name = "right half opaque";
+    texture.width = 8;
+    texture.height = 1;
+    for (uint32_t x = 0; x < 8; ++x)
+        texture.rgba8.insert(texture.rgba8.end(), {255, 255, 255, uint8_t(x < 4 ? 0 : 255)});
+    scene.textures.push_back(texture);
+    Material lamp;
+    lamp.emission = glm::vec3(3.0f);
+    lamp.baseColorTexture.index = 0;
+    lamp.alphaMode = mode;
+    scene.materials = {lamp};
+    for (glm::vec2 d : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+        scene.vertices.push_back({glm::vec3(d.x, 2.0f, d.y), d.x, glm::vec3(0, -1, 0), d.y});
+    scene.indices = {0, 1, 2, 0, 2, 3};
+    scene.triangleMaterials = {0, 0};
+    return scene;
+}
+
+TEST(EmissiveCoverage, AMaskedOrBlendedLampsHolesEmitNothing) {
+    // Half the quad is a hole (MASK) or fully transparent (BLEND): the light keeps its shape and
+    // emits half the power, the mean radiance over the quad halved, as the path tracer, whose rays
+    // pass through the holes, sees it. Opaque, the alpha is ignored.
+    for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend, AlphaMode::Opaque}) {
+        const std::vector<AreaLight> lights = findAreaLights(halfCutOutLamp(mode));
+        ASSERT_EQ(lights.size(), 1u);
+        EXPECT_NEAR(lights[0].area, 1.0f, 1e-5f);
+        EXPECT_NEAR(lights[0].meanRadiance.r, mode == AlphaMode::Opaque ? 3.0f : 1.5f, 0.01f) << int(mode);
+    }
+    // Without a texture the factor's alpha decides: below the cutoff the whole lamp is a hole.
+    Scene hidden = halfCutOutLamp(AlphaMode::Mask);
+    hidden.materials[0].baseColorTexture.index = -1;
+    hidden.materials[0].baseColorFactor.a = 0.2f;
+    EXPECT_TRUE(findAreaLights(hidden).empty());
+    hidden.materials[0].alphaMode = AlphaMode::Blend;
+    ASSERT_EQ(findAreaLights(hidden).size(), 1u);
+    EXPECT_NEAR(findAreaLights(hidden)[0].meanRadiance.r, 0.6f, 1e-5f);
+}
+
 }  // namespace
 }  // namespace vct
