@@ -257,27 +257,33 @@ Ray spawnRay(const SurfacePoint& s, const glm::vec3& direction) {
 // alpha there (factor × texture, read as the base colour is): MASK where it reaches the cutoff;
 // BLEND with probability alpha, stochastic transmission, whose mean lets 1 − alpha of the light
 // through (the renderer's screen-door pattern, alpha_coverage.h, averaged over a pixel).
-bool stopsRay(const PathTracer& tracer, const RayHit& hit, Rng& rng) {
+// The triangle's coverage at barycentric (b1, b2): coverageOfAlpha of its base colour's alpha there.
+float coverageAt(const PathTracer& tracer, uint32_t triangle, float b1, float b2) {
     const Scene& scene = *tracer.scene;
-    const uint32_t materialIndex = scene.triangleMaterials[hit.triangle];
+    const uint32_t materialIndex = scene.triangleMaterials[triangle];
     const Material& material = scene.materials[materialIndex];
     float alpha = material.baseColorFactor.a;
     if (hasTexture(tracer, material.baseColorTexture)) {
-        const float b0 = 1.0f - hit.b1 - hit.b2;
+        const float b0 = 1.0f - b1 - b2;
         const Vertex* v[3];
         for (uint32_t corner = 0; corner < 3; ++corner)
-            v[corner] = &scene.vertices[scene.indices[3 * hit.triangle + corner]];
-        const glm::vec2 texCoord0 = b0 * glm::vec2(v[0]->u, v[0]->v) + hit.b1 * glm::vec2(v[1]->u, v[1]->v) +
-                                    hit.b2 * glm::vec2(v[2]->u, v[2]->v);
-        const glm::vec2 texCoord1 = b0 * v[0]->uv1 + hit.b1 * v[1]->uv1 + hit.b2 * v[2]->uv1;
+            v[corner] = &scene.vertices[scene.indices[3 * triangle + corner]];
+        const glm::vec2 texCoord0 =
+            b0 * glm::vec2(v[0]->u, v[0]->v) + b1 * glm::vec2(v[1]->u, v[1]->v) + b2 * glm::vec2(v[2]->u, v[2]->v);
+        const glm::vec2 texCoord1 = b0 * v[0]->uv1 + b1 * v[1]->uv1 + b2 * v[2]->uv1;
         const glm::vec2 uv =
             glsl::transformedTexCoord(tracer.textureTransforms[materialIndex].baseColor, texCoord0, texCoord1);
         const LinearTexture& texture = tracer.textures[size_t(material.baseColorTexture.index)];
         alpha *= sampleTexels(texture, texture.alpha, uv.x, uv.y);
     }
-    if (material.alphaMode == AlphaMode::Mask) return alpha >= material.alphaCutoff;
-    if (material.alphaMode == AlphaMode::Blend) return rng.uniform() < alpha;
-    return true;
+    return coverageOfAlpha(material, alpha);
+}
+
+bool stopsRay(const PathTracer& tracer, const RayHit& hit, Rng& rng) {
+    const float coverage = coverageAt(tracer, hit.triangle, hit.b1, hit.b2);
+    if (tracer.scene->materials[tracer.scene->triangleMaterials[hit.triangle]].alphaMode == AlphaMode::Blend)
+        return rng.uniform() < coverage;
+    return coverage > 0.0f;
 }
 
 HitFilter alphaFilter(const PathTracer& tracer, Rng& rng) {
@@ -359,7 +365,8 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
     const uint32_t triangle = emitters.triangles[index];
     // Uniform point on the triangle (PBRT-v3 §13.6.5).
     const float root = std::sqrt(u1);
-    const TrianglePoint light = pointOnTriangle(*tracer.scene, triangle, u2 * root, 1.0f - root);
+    const float b1 = u2 * root, b2 = 1.0f - root;
+    const TrianglePoint light = pointOnTriangle(*tracer.scene, triangle, b1, b2);
 
     const glm::vec3 toLight = light.position - s.position;
     const float distanceSquared = glm::dot(toLight, toLight);
@@ -376,7 +383,9 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
 
     const float lightPdf = emitters.areaPdf[triangle] * distanceSquared / cosLight;
     const float weight = powerHeuristic(lightPdf, bsdfPdf(s.material, s.shadingNormal, s.toViewer, L));
-    return reflected * emissionAt(tracer, triangle, light) * (weight / lightPdf);
+    // A MASK emitter's holes emit nothing, a BLEND one's emission counts by its alpha: what the rays
+    // that pass through them with 1 − alpha see on average.
+    return reflected * emissionAt(tracer, triangle, light) * (coverageAt(tracer, triangle, b1, b2) * weight / lightPdf);
 }
 
 // Where in its pixel sample number `sample` looks: Roberts' R2 sequence (2018, "The Unreasonable

@@ -13,7 +13,8 @@
 // - Base colour = baseColorFactor.rgb × the sRGB-decoded texture, bilinear, repeat wrap. Its alpha
 //   (factor × texture) is the coverage of glTF's alphaMode: a MASK surface is not there where it is
 //   below alphaCutoff, a BLEND surface stops a ray with probability alpha (stochastic transmission),
-//   for camera, path and shadow rays alike; an emissive triangle's holes still glow when sampled.
+//   for camera, path and shadow rays alike; an emissive triangle emits where it is there (its
+//   holes emit nothing, its BLEND parts by their alpha), as the renderer's area lights do.
 // - Each texture is read at the texture-coordinate set its material names, through its
 //   KHR_texture_transform (shaders_glsl/texture_transform.h, as on the GPU). The occlusion texture
 //   is ignored: paths find the occlusion it stands for themselves.
