@@ -388,6 +388,20 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
     return reflected * emissionAt(tracer, triangle, light) * (coverageAt(tracer, triangle, b1, b2) * weight / lightPdf);
 }
 
+// Next-event estimation towards the environment image: a direction drawn by its luminance
+// (sky_sampling.h), MIS-weighted against BRDF sampling, which finds the sky where a path escapes.
+glm::vec3 skyLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rng) {
+    const float uCell = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+    const std::optional<SkySample> sample = sampleSky(tracer.sky, uCell, u1, u2);
+    if (!sample || glm::dot(s.geometricNormal, sample->direction) <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 reflected = reflectedTowards(s, sample->direction);
+    if (isBlack(reflected)) return glm::vec3(0.0f);
+    if (anyHit(tracer.bvh, spawnRay(s, sample->direction), alphaFilter(tracer, rng))) return glm::vec3(0.0f);
+    const float weight =
+        powerHeuristic(sample->pdf, bsdfPdf(s.material, s.shadingNormal, s.toViewer, sample->direction));
+    return reflected * skyRadiance(*tracer.scene, sample->direction) * (weight / sample->pdf);
+}
+
 // Where in its pixel sample number `sample` looks: Roberts' R2 sequence (2018, "The Unreasonable
 // Effectiveness of Quasirandom Sequences"), shifted by a random offset per pixel (Cranley-Patterson
 // rotation). Every prefix covers the pixel evenly, so a time-limited render stays unbiased, and each
@@ -421,6 +435,7 @@ PathTracer createPathTracer(const Scene& scene) {
             {textureTransform(material.baseColorTexture), textureTransform(material.metallicRoughnessTexture),
              textureTransform(material.normalTexture), textureTransform(material.emissiveTexture)});
     tracer.emitters = buildEmitterTable(scene);
+    tracer.sky = buildSkyDistribution(scene);
     return tracer;
 }
 
@@ -436,10 +451,14 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
             tracer.bvh, ray, depth == 1 ? cameraFilter(tracer, ray.direction, rng) : alphaFilter(tracer, rng));
         if (!hit) {
             // The sky: seen by the camera it is direct light, as an emitter seen is; on a surface
-            // it is indirect light, which is where the renderer's cones gather it. Found by BRDF
-            // sampling alone: without noise for a uniform sky, noisier for an image with a sun in it.
-            if (depth == 1 ? wantDirect : wantIndirect)
-                radiance += throughput * skyRadiance(*tracer.scene, ray.direction);
+            // it is indirect light, which is where the renderer's cones gather it. Found here by BRDF
+            // sampling, weighed against the light sampling of an environment image (skyLight).
+            if (depth == 1 ? wantDirect : wantIndirect) {
+                const float skyWeight = depth > 1 && tracer.sampleSky && !tracer.sky.empty()
+                                            ? powerHeuristic(previousBsdfPdf, skyPdf(tracer.sky, ray.direction))
+                                            : 1.0f;
+                radiance += throughput * skyRadiance(*tracer.scene, ray.direction) * skyWeight;
+            }
             break;
         }
         const SurfacePoint s = surfaceAt(tracer, *hit, ray.direction);
@@ -465,6 +484,7 @@ glm::vec3 tracePath(const PathTracer& tracer, Ray ray, Component component, Rng&
             radiance += throughput * punctualLight(tracer, s, rng);
             if (tracer.sampleEmitters) radiance += throughput * emissiveLight(tracer, s, rng);
         }
+        if (wantIndirect && tracer.sampleSky && !tracer.sky.empty()) radiance += throughput * skyLight(tracer, s, rng);
         // Direct light alone goes one step further only to find emitters by BRDF sampling.
         if (!wantIndirect && !(depth == 1 && !tracer.emitters.triangles.empty())) break;
 

@@ -20,7 +20,9 @@
 //   is ignored: paths find the occlusion it stands for themselves.
 // - Punctual lights (KHR_lights_punctual, no photometric factor) are delta lights, reached only
 //   by next-event estimation. Emissive triangles are sampled by area, chosen with probability
-//   ∝ area × luminance(emission), and combined with BRDF sampling by the power heuristic.
+//   ∝ area × luminance(emission), and combined with BRDF sampling by the power heuristic. So is an
+//   environment image, sampled by its luminance (sky_sampling.h); a uniform sky is left to BRDF
+//   sampling, which finds it without noise.
 //
 // Components: `Direct` is the emission the camera sees plus the punctual lights' light at the
 // first hit; `Indirect` is everything else; `Full` is their sum.
@@ -35,6 +37,7 @@
 #include "io/image_io.h"
 #include "sampling.h"
 #include "scene/scene.h"
+#include "sky_sampling.h"
 #include "texture_transform.h"
 
 namespace vct::pt {
@@ -75,6 +78,10 @@ struct PathTracer {
     // false: emissive surfaces are found by BRDF sampling alone, an independent (noisier) estimator
     // that the tests hold the MIS one against.
     bool sampleEmitters = true;
+    // The environment image's light sampling (sky_sampling.h); false: the sky is found by BRDF
+    // sampling alone, as the tests' independent estimator.
+    SkyDistribution sky;
+    bool sampleSky = true;
 };
 
 PathTracer createPathTracer(const Scene& scene);
