@@ -455,68 +455,60 @@ TEST(PathTracer, EmissiveTextureScalesTheEmissionTheCameraSees) {
     }
 }
 
-TEST(PathTracer, LightFromAnEmissiveTextureAgreesWithBrdfSamplingAlone) {
-    // A white floor under a quad that glows through a half-black texture: light sampling must
-    // weigh each sampled point by its own texel (the emitter's choice uses the texture's mean). The
-    // floor's light from the quad is direct light (one reflection).
+// A white floor (4 × 4 m at y = 0) under a 1 m quad of `lamp` at y = 0.5 facing down, textured
+// by scene.textures[0] across x, seen from straight above (image right = +x): its light on the
+// floor is direct light (one reflection). The two light estimates, light sampling with MIS and
+// BRDF sampling alone, rendered at 16 × 16.
+struct LampOverFloor {
+    RenderResult mis, brdfOnly;
+};
+LampOverFloor renderLampOverFloor(const Texture& texture, const Material& lamp, uint64_t seed) {
     Scene scene;
-    scene.textures.push_back(halfBlackTexture(8));
+    scene.textures.push_back(texture);
     const uint32_t floor = addMaterial(scene, lambertian(glm::vec3(0.8f)));
-    const uint32_t emitter = addMaterial(scene, texturedEmitter(glm::vec3(4.0f)));
-    addQuad(scene, {glm::vec3(-2, 0, -2), glm::vec3(2, 0, -2), glm::vec3(2, 0, 2), glm::vec3(-2, 0, 2)},
-            glm::vec3(0, 1, 0), floor);
-    addTexturedQuad(scene, glm::vec3(-0.5f, 0.5f, 0.5f), glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), emitter);
-    Camera camera;
-    camera.position = glm::vec3(0.0f, 2.5f, 0.0f);  // looking straight down, image right = +x
-    camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-    camera.up = glm::vec3(0.0f, 0.0f, -1.0f);
-    camera.yfov = 1.2f;
-    scene.cameras.push_back(camera);
-    PathTracer tracer = createPathTracer(scene);
-    constexpr uint32_t kSize = 16;
-    const RenderResult mis = render(tracer, smallRender(scene, kSize, 128, Component::Direct, 41));
-    tracer.sampleEmitters = false;
-    const RenderResult brdfOnly = render(tracer, smallRender(scene, kSize, 128, Component::Direct, 42));
-    const uint32_t h = kSize / 2;
-    for (auto [x0, y0, x1, y1] : {std::array<uint32_t, 4>{0, 0, h, kSize}, {h, 0, kSize, kSize}}) {
-        const Estimate a = regionLuminance(mis, x0, y0, x1, y1);
-        const Estimate b = regionLuminance(brdfOnly, x0, y0, x1, y1);
-        EXPECT_NEAR(a.mean, b.mean, kSigmas * std::hypot(a.standardError, b.standardError)) << "region " << x0;
-        EXPECT_GT(a.mean, 0.0);
-    }
-}
-
-TEST(PathTracer, LightFromACutOutEmitterAgreesWithBrdfSamplingAlone) {
-    // The floor and quad above, the quad glowing evenly but cut out (alphaMode MASK) where its base
-    // colour texture's alpha is 0, on its left half: BRDF samples pass through the holes, so light
-    // sampling must not find emission there either (it did, and the floor took half again as much).
-    Scene scene;
-    Texture cutOut = halfBlackTexture(8);
-    for (uint32_t x = 0; x < 4; ++x) cutOut.rgba8[4 * x + 3] = 0;
-    scene.textures.push_back(cutOut);
-    const uint32_t floor = addMaterial(scene, lambertian(glm::vec3(0.8f)));
-    Material lamp = lambertian(glm::vec3(1.0f), glm::vec3(4.0f));
-    lamp.baseColorTexture.index = 0;
-    lamp.alphaMode = AlphaMode::Mask;
     const uint32_t emitter = addMaterial(scene, lamp);
     addQuad(scene, {glm::vec3(-2, 0, -2), glm::vec3(2, 0, -2), glm::vec3(2, 0, 2), glm::vec3(-2, 0, 2)},
             glm::vec3(0, 1, 0), floor);
     addTexturedQuad(scene, glm::vec3(-0.5f, 0.5f, 0.5f), glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), emitter);
     Camera camera;
-    camera.position = glm::vec3(0.0f, 2.5f, 0.0f);  // looking straight down, image right = +x
+    camera.position = glm::vec3(0.0f, 2.5f, 0.0f);
     camera.forward = glm::vec3(0.0f, -1.0f, 0.0f);
     camera.up = glm::vec3(0.0f, 0.0f, -1.0f);
     camera.yfov = 1.2f;
     scene.cameras.push_back(camera);
     PathTracer tracer = createPathTracer(scene);
-    constexpr uint32_t kSize = 16;
-    const RenderResult mis = render(tracer, smallRender(scene, kSize, 128, Component::Direct, 43));
+    LampOverFloor result;
+    result.mis = render(tracer, smallRender(scene, 16, 128, Component::Direct, seed));
     tracer.sampleEmitters = false;
-    const RenderResult brdfOnly = render(tracer, smallRender(scene, kSize, 128, Component::Direct, 44));
-    const Estimate a = regionLuminance(mis, 0, 0, kSize, kSize);
-    const Estimate b = regionLuminance(brdfOnly, 0, 0, kSize, kSize);
-    EXPECT_NEAR(a.mean, b.mean, kSigmas * std::hypot(a.standardError, b.standardError));
+    result.brdfOnly = render(tracer, smallRender(scene, 16, 128, Component::Direct, seed + 1));
+    return result;
+}
+
+void expectTheEstimatesAgree(const LampOverFloor& lamp, uint32_t x0, uint32_t x1) {
+    const Estimate a = regionLuminance(lamp.mis, x0, 0, x1, 16);
+    const Estimate b = regionLuminance(lamp.brdfOnly, x0, 0, x1, 16);
+    EXPECT_NEAR(a.mean, b.mean, kSigmas * std::hypot(a.standardError, b.standardError)) << "columns from " << x0;
     EXPECT_GT(a.mean, 0.0);
+}
+
+TEST(PathTracer, LightFromAnEmissiveTextureAgreesWithBrdfSamplingAlone) {
+    // The quad glows through a half-black texture: light sampling must weigh each sampled point by
+    // its own texel (the emitter's choice uses the texture's mean).
+    const LampOverFloor lamp = renderLampOverFloor(halfBlackTexture(8), texturedEmitter(glm::vec3(4.0f)), 41);
+    expectTheEstimatesAgree(lamp, 0, 8);
+    expectTheEstimatesAgree(lamp, 8, 16);
+}
+
+TEST(PathTracer, LightFromACutOutEmitterAgreesWithBrdfSamplingAlone) {
+    // The quad glows evenly but is cut out (alphaMode MASK) where its base colour texture's alpha is
+    // 0, on its left half: BRDF samples pass through the holes, so light sampling must not find
+    // emission there either (it did, and the floor took half again as much).
+    Texture cutOut = halfBlackTexture(8);
+    for (uint32_t x = 0; x < 4; ++x) cutOut.rgba8[4 * x + 3] = 0;
+    Material lamp = lambertian(glm::vec3(1.0f), glm::vec3(4.0f));
+    lamp.baseColorTexture.index = 0;
+    lamp.alphaMode = AlphaMode::Mask;
+    expectTheEstimatesAgree(renderLampOverFloor(cutOut, lamp, 43), 0, 16);
 }
 
 TEST(PathTracer, RendersWithDifferentSeedsAgreeWithinTheirEstimatedNoise) {
