@@ -81,8 +81,10 @@ void Renderer::setGeometry(const Scene& scene) {
     grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
     environment_ = scene.environment;
     environmentRotation_ = scene.environmentRotation;
-    sky_ = std::make_unique<SkyImage>(context_, scene.environmentMap.get());
-    skyMean_ = scene.environmentMap ? meanEnvironmentRadiance(*scene.environmentMap) : glm::vec3(1.0f);
+    environmentSun_ = scene.environmentMap ? separateSun(*scene.environmentMap) : std::nullopt;
+    const EnvironmentMap* sky = environmentSun_ ? environmentSun_->withoutSun.get() : scene.environmentMap.get();
+    sky_ = std::make_unique<SkyImage>(context_, sky);
+    skyMean_ = sky ? meanEnvironmentRadiance(*sky) : glm::vec3(1.0f);
     brightestEmission_ = 0.0f;
     anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
         return material.metallic > 0.0f || material.specularWeight > 0.0f;
@@ -119,10 +121,30 @@ void Renderer::setLights(const std::vector<Light>& lights) {
 
 void Renderer::relight() { applyLights(lights_); }
 
+std::vector<Light> Renderer::withEnvironmentSun(const std::vector<Light>& lights) const {
+    std::vector<Light> all = lights;
+    if (!environmentSun_) return all;
+    const glm::vec3 illuminance = environment_ * environmentSun_->illuminance;
+    const float brightest = std::max({illuminance.r, illuminance.g, illuminance.b});
+    if (!(brightest > 0.0f)) return all;
+    // Turned about +Y with the image (equirectangular.h): a right-handed rotation.
+    const glm::vec3 towards = environmentSun_->towardsSun;
+    const float c = std::cos(environmentRotation_), s = std::sin(environmentRotation_);
+    Light sun;
+    sun.name = "the environment image's sun";
+    sun.type = LightType::Directional;
+    sun.direction = -glm::vec3(towards.x * c + towards.z * s, towards.y, -towards.x * s + towards.z * c);
+    sun.intensity = brightest;
+    sun.color = illuminance / brightest;
+    all.push_back(sun);
+    return all;
+}
+
 void Renderer::applyLights(const std::vector<Light>& lights) {
-    checkLightsCanBeRendered(lights, sceneName_);
+    const std::vector<Light> all = withEnvironmentSun(lights);
+    checkLightsCanBeRendered(all, sceneName_);
     lights_ = lights;
-    std::vector<Light> local = lights;
+    std::vector<Light> local = all;
     for (Light& light : local) light.position -= sceneOrigin_;
     const ShadowLayout previous = shadowLayout_;
     shadowLayout_ = layoutShadows(local, areaLights_, sceneBounds_, settings_);
@@ -159,7 +181,7 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     const glm::vec3 sky = environment_ * skyMean_;
     brightest.emission = glm::vec3(std::max({brightestEmission_, sky.r, sky.g, sky.b}));
     emitters.materials.push_back(brightest);
-    radianceScale_ = radianceStorageScale(lights_, emitters, grid_.originVoxelSize.w);
+    radianceScale_ = radianceStorageScale(all, emitters, grid_.originVoxelSize.w);
     stale_.shadows = true;
     stale_.radiance = true;
 }
@@ -172,7 +194,7 @@ void Renderer::setEnvironment(glm::vec3 environment) {
 void Renderer::setEnvironmentRotation(float radians) {
     if (radians == environmentRotation_) return;
     environmentRotation_ = radians;
-    relight();  // the cones leaving the grid see another sky
+    relight();  // the cones leaving the grid see another sky, and the image's sun turns with it
 }
 
 void Renderer::setShading(const ShadingSettings& shading) {

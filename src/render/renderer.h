@@ -27,6 +27,7 @@
 #include "render/sky_image.h"
 #include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
+#include "scene/environment_sun.h"
 #include "scene/scene.h"
 
 namespace vct {
@@ -103,6 +104,9 @@ public:
 
 private:
     void applyLights(const std::vector<Light>& lights);
+    // `lights` and, where the environment image has a sun, that sun as a directional light, turned
+    // and scaled as the sky is now.
+    std::vector<Light> withEnvironmentSun(const std::vector<Light>& lights) const;
 
     glm::mat4 writeFrameConstants();  // returns the camera's view-projection it wrote
     // The components the voxels' light depends on (glsl::VOXEL_LIGHT_FLAGS) as `shading` shows them.
@@ -123,11 +127,12 @@ private:
     Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
     Camera camera_;
     std::vector<Light> lights_;
-    glm::vec3 environment_{0.0f};        // Scene::environment
-    float environmentRotation_ = 0.0f;   // Scene::environmentRotation
-    std::unique_ptr<SkyImage> sky_;      // Scene::environmentMap, or the placeholder
-    glm::vec3 skyMean_{1.0f};            // the environment image's mean radiance (1 without one)
-    std::vector<AreaLight> areaLights_;  // the scene's emissive surfaces, in the local frame
+    glm::vec3 environment_{0.0f};                   // Scene::environment
+    float environmentRotation_ = 0.0f;              // Scene::environmentRotation
+    std::unique_ptr<SkyImage> sky_;                 // Scene::environmentMap without its sun, or the placeholder
+    glm::vec3 skyMean_{1.0f};                       // that image's mean radiance (1 without one)
+    std::optional<EnvironmentSun> environmentSun_;  // lit as a directional light (environment_sun.h)
+    std::vector<AreaLight> areaLights_;             // the scene's emissive surfaces, in the local frame
     StaleInputs stale_;
     glm::mat4 gbufferViewProjection_{0.0f};                // the last frame's camera
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass

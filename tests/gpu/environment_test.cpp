@@ -11,6 +11,7 @@
 
 #include "../cpu/environment_images.h"
 #include "gpu_test.h"
+#include "path_tracer.h"
 #include "render/renderer.h"
 
 namespace vct::test {
@@ -216,6 +217,74 @@ TEST_F(Environment, TheCameraSeesTheImageWhereItsDirectionsPoint) {
                     EXPECT_NEAR(seen[c], expected[c], 1e-3f) << x << "," << y << " channel " << c << " turned " << turn;
             }
     }
+}
+
+TEST_F(Environment, AnImagesSunCastsTheShadowThePathTracerSees) {
+    // A 0.6 m grey box on the grey plane under a sky image whose 4 × 4-texel sun (radiance 2000, 45°
+    // up) holds nearly all its light, seen from straight above. Through the cones alone the sun was blurred over their
+    // aperture and the box cast no shadow; lit as a sun, its shadow falls where the path tracer,
+    // which reads the whole image, finds it, and the light around it is the path tracer's.
+    const Material grey = greyLambertian();
+    Scene scene = planeUnderTheSky(grey);
+    addBox(scene, glm::vec3(-0.3f, 0.0f, -0.3f), glm::vec3(0.3f, 0.6f, 0.3f), 0);
+    // Seen from high above, so that the box's top hides little of the ground around it.
+    Camera& above = scene.cameras.front();
+    above.position = glm::vec3(0.0f, 10.0f, 0.0f);
+    above.yfov = 2.0f * std::atan(0.2f);
+    scene.environment = glm::vec3(1.0f);
+    scene.environmentMap = makeEnvironmentMap(64, 32, [](uint32_t x, uint32_t y) {
+        if (x >= 40 && x < 44 && y >= 6 && y < 10) return glm::vec3(2000.0f);
+        return y < 16 ? glm::vec3(0.02f, 0.04f, 0.08f) : glm::vec3(0.0f);
+    });
+    RenderSettings settings = smallSettings(RenderMode::Full);
+    settings.image.supersample = 2;
+    Renderer renderer(gpu(), scene, settings);
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+
+    pt::PathTracer tracer = pt::createPathTracer(scene);
+    pt::RenderSettings reference;
+    reference.width = reference.height = 32;
+    reference.samplesPerPixel = 256;
+    reference.threads = 2;
+    reference.camera = scene.cameras.front();
+    const Image truth = pt::render(tracer, reference).image;
+
+    // The plane's pixels (the middle half of the image) outside the box's top, split by the truth
+    // into the box's shadow and the sunlit ground.
+    auto luminance = [](const Image& from, uint32_t x, uint32_t y) {
+        const glm::vec3 c = glm::make_vec3(from.pixel(x, y));
+        return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+    };
+    double litTruth = 0.0, litSeen = 0.0, shadowTruth = 0.0, shadowSeen = 0.0;
+    int lit = 0, shadowed = 0;
+    float brightest = 0.0f;
+    for (uint32_t y = 8; y < 24; ++y)
+        for (uint32_t x = 8; x < 24; ++x) brightest = std::max(brightest, luminance(truth, x, y));
+    for (uint32_t y = 9; y < 23; ++y)
+        for (uint32_t x = 9; x < 23; ++x) {
+            if (x >= 13 && x < 19 && y >= 13 && y < 19) continue;  // the box's top
+            const float t = luminance(truth, x, y), seen = luminance(image, x, y);
+            if (t < 0.2f * brightest) {
+                shadowTruth += t;
+                shadowSeen += seen;
+                ++shadowed;
+            } else if (t > 0.8f * brightest) {
+                litTruth += t;
+                litSeen += seen;
+                ++lit;
+            }
+        }
+    std::printf("[ sky sun ] sunlit ground %.3f (path tracer %.3f, %d pixels), in the box's shadow %.3f (%.3f, %d)\n",
+                litSeen / lit, litTruth / lit, lit, shadowSeen / shadowed, shadowTruth / shadowed, shadowed);
+    ASSERT_GE(shadowed, 6);
+    ASSERT_GE(lit, 20);
+    EXPECT_NEAR(litSeen / lit, litTruth / lit, 0.05 * litTruth / lit);
+    // The shade is as dark beside the sunlit ground as the truth's, within a tenth of the sunlit
+    // ground's light (through the cones alone it was 0.57 as bright as the sunlit ground). Its own
+    // level is not held here: 0.17 against the truth's 1.47, the light the box's shaded faces
+    // bounce from the sunlit ground being mostly missing.
+    EXPECT_NEAR(shadowSeen / shadowed, shadowTruth / shadowed, 0.1 * litTruth / lit);
 }
 
 }  // namespace
