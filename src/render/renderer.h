@@ -74,6 +74,8 @@ public:
     // converges the light again.
     void setEnvironmentRotation(float radians);
     float environmentRotation() const { return environmentRotation_; }
+    // Whether the environment image holds a sun, lit as a directional light (environment_sun.h).
+    bool environmentSunLit() const { return environmentSun_.has_value(); }
     const RenderSettings& settings() const { return settings_; }
     // Changes that need no new images or voxels (a new image size is resize(); new resources
     // need a new Renderer).

@@ -83,6 +83,7 @@ void drawLightsSection(ViewerState& state) {
         // Radiance, not a display colour: HDR values, dragged in small steps. With an environment
         // image it is the factor on the image's radiance.
         if (!state.skyImage.empty()) ImGui::TextWrapped("image: %s", state.skyImage.c_str());
+        if (state.skyImageSun) ImGui::TextWrapped("its sun is lit as a sun, with a shadow map");
         ImGui::ColorEdit3(state.skyImage.empty() ? "radiance" : "factor", &state.environment.x,
                           ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
         state.environment = glm::max(state.environment, glm::vec3(0.0f));

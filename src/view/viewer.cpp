@@ -319,6 +319,7 @@ void Viewer::showScene() {
     state_.environment = scene_.environment;
     state_.skyImage = scene_.environmentMap ? scene_.environmentMap->name : std::string();
     state_.skyRotation = scene_.environmentRotation;
+    state_.skyImageSun = renderer_ && renderer_->environmentSunLit();
     state_.materials = scene_.materials;
     state_.sceneSize = std::max(glm::length(scene_.bounds().extent()), 1e-3f);
     const Light& sun = scene_.lights.at(state_.sunIndex);

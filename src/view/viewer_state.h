@@ -42,6 +42,7 @@ struct ViewerState {
     size_t sunIndex = 0;
     glm::vec3 environment{0.0f};      // the sky's radiance, as the scene panel edits it
     std::string skyImage;             // the environment image's file (then `environment` scales it), or empty
+    bool skyImageSun = false;         // the image's sun is lit as a sun (environment_sun.h)
     float skyRotation = 0.0f;         // radians the environment image is turned about +Y (Scene::environmentRotation)
     std::vector<Material> materials;  // shown, not edited
     float sceneSize = 1.0f;           // the bounds' diagonal, for drag speeds
