@@ -251,7 +251,8 @@ TEST_F(Environment, AnImagesSunCastsTheShadowThePathTracerSees) {
     const Image truth = pt::render(tracer, reference).image;
 
     // The plane's pixels (the middle half of the image) outside the box's top, split by the truth
-    // into the box's shadow and the sunlit ground.
+    // into the box's umbra and the sunlit ground. (The painted sun is 22° wide: the truth's
+    // penumbra is wide, the directional light's narrow; the pixels between are left out.)
     auto luminance = [](const Image& from, uint32_t x, uint32_t y) {
         const glm::vec3 c = glm::make_vec3(from.pixel(x, y));
         return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
@@ -265,7 +266,7 @@ TEST_F(Environment, AnImagesSunCastsTheShadowThePathTracerSees) {
         for (uint32_t x = 9; x < 23; ++x) {
             if (x >= 13 && x < 19 && y >= 13 && y < 19) continue;  // the box's top
             const float t = luminance(truth, x, y), seen = luminance(image, x, y);
-            if (t < 0.2f * brightest) {
+            if (t < 0.06f * brightest) {
                 shadowTruth += t;
                 shadowSeen += seen;
                 ++shadowed;
@@ -275,16 +276,15 @@ TEST_F(Environment, AnImagesSunCastsTheShadowThePathTracerSees) {
                 ++lit;
             }
         }
-    std::printf("[ sky sun ] sunlit ground %.3f (path tracer %.3f, %d pixels), in the box's shadow %.3f (%.3f, %d)\n",
+    std::printf("[ sky sun ] sunlit ground %.3f (path tracer %.3f, %d pixels), in the box's umbra %.3f (%.3f, %d)\n",
                 litSeen / lit, litTruth / lit, lit, shadowSeen / shadowed, shadowTruth / shadowed, shadowed);
     ASSERT_GE(shadowed, 6);
     ASSERT_GE(lit, 20);
     EXPECT_NEAR(litSeen / lit, litTruth / lit, 0.05 * litTruth / lit);
-    // The shade is as dark beside the sunlit ground as the truth's, within a tenth of the sunlit
-    // ground's light (through the cones alone it was 0.57 as bright as the sunlit ground). Its own
-    // level is not held here: 0.17 against the truth's 1.47, the light the box's shaded faces
-    // bounce from the sunlit ground being mostly missing.
-    EXPECT_NEAR(shadowSeen / shadowed, shadowTruth / shadowed, 0.1 * litTruth / lit);
+    // The umbra is as dark beside the sunlit ground as the truth's, within 2 % of the sunlit ground's
+    // light (through the cones alone the box cast no shadow). Its own light, the sky's and what the
+    // box's shaded faces bounce, measured 0.16 against the truth's 0.23.
+    EXPECT_NEAR(shadowSeen / shadowed, shadowTruth / shadowed, 0.02 * litTruth / lit);
 }
 
 }  // namespace
