@@ -21,6 +21,13 @@ SHARED_FN vec2 equirectangularCoordinates(vec3 direction, float turns) {
     return vec2(u, v);
 }
 
+// The unit direction an image turned `turns` shows at (u, v): equirectangularCoordinates inverted.
+SHARED_FN vec3 equirectangularDirection(vec2 uv, float turns) {
+    float phi = (uv.x - 0.5f - turns) * 6.28318531f;
+    float theta = uv.y * 3.14159265f;
+    return vec3(sin(theta) * sin(phi), cos(theta), -sin(theta) * cos(phi));
+}
+
 // The mip level of a `width`-texel-wide image whose texels span a cone of half-angle tangent
 // `tanHalfAperture`: along the equator a texel spans 2π / width radians.
 SHARED_FN float equirectangularLevel(float tanHalfAperture, float width) {

@@ -65,6 +65,11 @@ bool namesEnvironmentImage(const std::string& value) {
     return extension == ".hdr";
 }
 
+double equirectangularCellSolidAngle(uint32_t row, uint32_t columns, uint32_t rows) {
+    const double top = M_PI * double(row) / double(rows), bottom = M_PI * double(row + 1) / double(rows);
+    return 2.0 * M_PI / double(columns) * (std::cos(top) - std::cos(bottom));
+}
+
 float environmentTurns(float rotation) {
     const double turns = double(rotation) / (2.0 * M_PI);
     return float(turns - std::floor(turns));

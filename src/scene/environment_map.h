@@ -37,6 +37,10 @@ EnvironmentMap loadEnvironmentMap(const std::string& path);
 // clamped at the poles, as the renderer's sampler reads level 0.
 glm::vec3 environmentRadiance(const EnvironmentMap& map, const glm::vec3& direction, float rotation);
 
+// The solid angle of a cell in row `row` of an equirectangular grid of `columns` × `rows` cells: its
+// share of the longitudes times its band of latitudes.
+double equirectangularCellSolidAngle(uint32_t row, uint32_t columns, uint32_t rows);
+
 // A rotation about +Y in radians as the shaders take it: turns, in [0, 1) (equirectangular.h).
 float environmentTurns(float rotation);
 

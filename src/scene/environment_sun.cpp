@@ -1,26 +1,34 @@
 #include "scene/environment_sun.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
+
+#include "equirectangular.h"
 
 namespace vct {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
 
-// The direction of texel (x, y)'s centre (equirectangular.h, unturned) and the solid angle it spans.
+// The direction of texel (x, y)'s centre (unturned) and the solid angle it spans.
 glm::dvec3 texelDirection(const EnvironmentMap& map, uint32_t x, uint32_t y) {
-    const double phi = ((double(x) + 0.5) / map.width - 0.5) * 2.0 * kPi;
-    const double theta = (double(y) + 0.5) / map.height * kPi;
-    return glm::dvec3(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+    return glm::dvec3(
+        glsl::equirectangularDirection(glm::vec2((x + 0.5f) / float(map.width), (y + 0.5f) / float(map.height)), 0.0f));
 }
 
 double texelSolidAngle(const EnvironmentMap& map, uint32_t y) {
-    return 2.0 * kPi / map.width * (std::cos(kPi * y / map.height) - std::cos(kPi * (y + 1.0) / map.height));
+    return equirectangularCellSolidAngle(y, map.width, map.height);
+}
+
+// The texel's four neighbours, wrapping around in u; at the top and bottom rows the texel itself
+// stands in for the one beyond.
+std::array<size_t, 4> neighboursOf(const EnvironmentMap& map, size_t texel) {
+    const uint32_t width = map.width, x = uint32_t(texel % width), y = uint32_t(texel / width);
+    return {size_t(y) * width + (x + 1) % width, size_t(y) * width + (x + width - 1) % width,
+            y > 0 ? texel - width : texel, y + 1 < map.height ? texel + width : texel};
 }
 
 }  // namespace
@@ -53,12 +61,9 @@ std::optional<EnvironmentSun> separateSun(const EnvironmentMap& map) {
         const size_t texel = pending.back();
         pending.pop_back();
         region.push_back(texel);
-        const uint32_t x = uint32_t(texel % width), y = uint32_t(texel / width);
-        regionSolidAngle += texelSolidAngle(map, y);
+        regionSolidAngle += texelSolidAngle(map, uint32_t(texel / width));
         if (regionSolidAngle > kMaxSunSolidAngle) return std::nullopt;
-        const size_t neighbours[4] = {size_t(y) * width + (x + 1) % width, size_t(y) * width + (x + width - 1) % width,
-                                      y > 0 ? texel - width : texel, y + 1 < height ? texel + width : texel};
-        for (size_t next : neighbours) {
+        for (size_t next : neighboursOf(map, texel)) {
             if (inSun[next] ||
                 luminance(glm::dvec3(map.texel(uint32_t(next % width), uint32_t(next / width)))) < brightest / 32.0)
                 continue;
@@ -71,10 +76,7 @@ std::optional<EnvironmentSun> separateSun(const EnvironmentMap& map) {
     glm::dvec3 ringSum(0.0);
     double ringCount = 0.0;
     for (size_t texel : region) {
-        const uint32_t x = uint32_t(texel % width), y = uint32_t(texel / width);
-        const size_t neighbours[4] = {size_t(y) * width + (x + 1) % width, size_t(y) * width + (x + width - 1) % width,
-                                      y > 0 ? texel - width : texel, y + 1 < height ? texel + width : texel};
-        for (size_t next : neighbours) {
+        for (size_t next : neighboursOf(map, texel)) {
             if (inSun[next]) continue;
             ringSum += glm::dvec3(map.texel(uint32_t(next % width), uint32_t(next / width)));
             ringCount += 1.0;

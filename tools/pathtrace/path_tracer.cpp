@@ -359,10 +359,7 @@ glm::vec3 emissiveLight(const PathTracer& tracer, const SurfacePoint& s, Rng& rn
     const EmitterTable& emitters = tracer.emitters;
     const float uPick = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
     if (emitters.triangles.empty()) return glm::vec3(0.0f);
-    const size_t index =
-        std::min(size_t(std::upper_bound(emitters.cdf.begin(), emitters.cdf.end(), uPick) - emitters.cdf.begin()),
-                 emitters.triangles.size() - 1);
-    const uint32_t triangle = emitters.triangles[index];
+    const uint32_t triangle = emitters.triangles[pickFromCdf(emitters.cdf, uPick)];
     // Uniform point on the triangle (PBRT-v3 §13.6.5).
     const float root = std::sqrt(u1);
     const float b1 = u2 * root, b2 = 1.0f - root;

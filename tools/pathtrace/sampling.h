@@ -1,8 +1,10 @@
 // Random numbers and the sample warps of the path tracer, with their densities.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -74,6 +76,13 @@ inline glm::vec2 concentricDisk(float u1, float u2) {
     const float r = xMajor ? x : y;
     const float theta = xMajor ? (kPi / 4.0f) * (y / x) : (kPi / 2.0f) - (kPi / 4.0f) * (x / y);
     return r * glm::vec2(std::cos(theta), std::sin(theta));
+}
+
+// The entry a uniform `u` in [0, 1) picks from a cumulative distribution (ascending, non-empty, its
+// last entry 1): the first whose cumulative probability passes u, so entry i with probability
+// cdf[i] − cdf[i − 1] and never one of probability 0.
+inline size_t pickFromCdf(const std::vector<float>& cdf, float u) {
+    return std::min(size_t(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin()), cdf.size() - 1);
 }
 
 // Malley's method: cosine-weighted direction about local +z, pdf cosθ/π (PBRT-v3 §13.6.3).

@@ -4,19 +4,17 @@
 #include <cmath>
 
 #include "equirectangular.h"
+#include "sampling.h"
 #include "scene/environment_map.h"
 
 namespace vct::pt {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr uint32_t kMaxColumns = 512, kMaxRows = 256;
 
-// The solid angle of a cell of row `row`: its share of the longitudes times the band of latitudes.
 double cellSolidAngle(const SkyDistribution& sky, uint32_t row) {
-    const double top = kPi * double(row) / double(sky.rows), bottom = kPi * double(row + 1) / double(sky.rows);
-    return 2.0 * kPi / double(sky.columns) * (std::cos(top) - std::cos(bottom));
+    return equirectangularCellSolidAngle(row, sky.columns, sky.rows);
 }
 
 }  // namespace
@@ -83,21 +81,17 @@ SkyDistribution buildSkyDistribution(const Scene& scene) {
 
 std::optional<SkySample> sampleSky(const SkyDistribution& sky, float uCell, float u1, float u2) {
     if (sky.empty()) return std::nullopt;
-    // The first cell whose cumulative probability passes uCell; cells of probability 0 are never it.
-    const size_t cell =
-        std::min(size_t(std::upper_bound(sky.cdf.begin(), sky.cdf.end(), uCell) - sky.cdf.begin()), sky.cdf.size() - 1);
+    const size_t cell = pickFromCdf(sky.cdf, uCell);
     if (!(sky.probability[cell] > 0.0f)) return std::nullopt;
     const uint32_t row = uint32_t(cell / sky.columns), column = uint32_t(cell % sky.columns);
     // Uniform in solid angle within the cell: u uniform, cos θ uniform between the row's edges.
     const double u = (double(column) + double(u1)) / double(sky.columns);
-    const double cosTop = std::cos(kPi * double(row) / double(sky.rows));
-    const double cosBottom = std::cos(kPi * double(row + 1) / double(sky.rows));
+    const double cosTop = std::cos(M_PI * double(row) / double(sky.rows));
+    const double cosBottom = std::cos(M_PI * double(row + 1) / double(sky.rows));
     const double cosTheta = cosTop - double(u2) * (cosTop - cosBottom);
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    // The inverse of equirectangularCoordinates: u = ½ + atan(x, −z)/2π + turns.
-    const double phi = (u - 0.5 - double(sky.turns)) * 2.0 * kPi;
+    const double v = std::acos(std::clamp(cosTheta, -1.0, 1.0)) / M_PI;
     SkySample sample;
-    sample.direction = glm::vec3(glm::dvec3(sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi)));
+    sample.direction = glsl::equirectangularDirection(glm::vec2(float(u), float(v)), sky.turns);
     sample.pdf = float(double(sky.probability[cell]) / cellSolidAngle(sky, row));
     if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
     return sample;
