@@ -10,18 +10,13 @@
 namespace vct {
 namespace {
 
+using test::expectNear;
 using test::GltfBuilder;
 using test::json;
 using test::TempFolder;
 
 constexpr float kTolerance = 1e-5f;
 constexpr float kPi = 3.14159265358979f;
-
-void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance = kTolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 glm::vec3 cornerOf(const Scene& scene, size_t triangle, int corner) {
     return scene.vertices[scene.indices[3 * triangle + size_t(corner)]].position;

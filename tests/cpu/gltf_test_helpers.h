@@ -10,11 +10,19 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <tiny_gltf.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 namespace vct::test {
+
+// Each component of `actual` within `tolerance` of `expected`'s.
+inline void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
 
 namespace fs = std::filesystem;
 using nlohmann::json;

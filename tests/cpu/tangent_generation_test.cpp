@@ -11,17 +11,12 @@
 namespace vct {
 namespace {
 
+using test::expectNear;
 using test::GltfBuilder;
 using test::json;
 using test::TempFolder;
 
 constexpr float kTolerance = 1e-5f;
-
-void expectNear(const glm::vec3& actual, const glm::vec3& expected) {
-    EXPECT_NEAR(actual.x, expected.x, kTolerance);
-    EXPECT_NEAR(actual.y, expected.y, kTolerance);
-    EXPECT_NEAR(actual.z, expected.z, kTolerance);
-}
 
 Vertex vertexAt(glm::vec3 position, glm::vec2 uv, glm::vec3 normal = {0, 0, 1}) {
     Vertex vertex;
