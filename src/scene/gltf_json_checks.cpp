@@ -1,7 +1,9 @@
 #include "scene/gltf_json_checks.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
+
 #include <nlohmann/json.hpp>
 
 #include "error.h"
@@ -84,13 +86,28 @@ void checkIntegerRanges(const nlohmann::json& document, const std::string& path)
     checkIntegers(document, "", "", path);
 }
 
-void checkGlbVersion(const std::vector<uint8_t>& bytes, const std::string& path) {
+void checkGlbContainer(const std::vector<uint8_t>& bytes, const std::string& path) {
     if (bytes.size() < 8) return;  // tinygltf reports the truncated header
-    uint32_t version = 0;
-    std::memcpy(&version, bytes.data() + 4, 4);  // little-endian, as the host (image_io.cpp asserts it)
+    auto word = [&](size_t at) {
+        uint32_t value = 0;
+        std::memcpy(&value, bytes.data() + at, 4);  // little-endian, as the host (image_io.cpp asserts it)
+        return value;
+    };
+    const uint32_t version = word(4);
     if (version != 2)
         throw Error(path + ": a binary glTF (GLB) of version " + std::to_string(version) +
                     "; only version 2 is supported");
+    if (bytes.size() < 20) return;
+    // tinygltf 2.7.0 checks the BIN chunk's length against the GLB's without the chunk's own 8-byte
+    // header, and then copies up to 8 bytes from past the end of the file (tools/fuzz.sh's find,
+    // tests/data/fuzz-regressions/glb-bin-chunk-header-uncounted.glb).
+    const uint64_t end = std::min<uint64_t>(word(8), bytes.size());
+    const uint64_t binChunk = 20 + uint64_t(word(12));  // after the header and the JSON chunk
+    if (binChunk + 8 > end) return;                     // no BIN chunk header: tinygltf judges the rest
+    const uint64_t binBytes = word(size_t(binChunk));
+    if (binChunk + 8 + binBytes > end)
+        throw Error(path + ": the GLB's BIN chunk says it holds " + std::to_string(binBytes) + " bytes, but only " +
+                    std::to_string(end - binChunk - 8) + " follow its header");
 }
 
 }  // namespace vct

@@ -25,7 +25,8 @@ void checkJsonNesting(const std::string& text, const std::string& path);
 // read are not checked.
 void checkIntegerRanges(const nlohmann::json& document, const std::string& path);
 
-// A .glb starts with "glTF" and a version; throws vct::Error naming `path` for any version but 2.
-void checkGlbVersion(const std::vector<uint8_t>& bytes, const std::string& path);
+// A .glb starts with "glTF", a version and a length; throws vct::Error naming `path` for any version
+// but 2, or for a BIN chunk that says it holds more than the file has after its header.
+void checkGlbContainer(const std::vector<uint8_t>& bytes, const std::string& path);
 
 }  // namespace vct

@@ -314,7 +314,7 @@ Parsed parse(const std::string& path, const LoadOptions& options) {
     if (error) throw Error(path + ": the allowed folder '" + options.allowedRoot + "' " + error.message());
 
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    if (binary) checkGlbVersion(bytes, path);
+    if (binary) checkGlbContainer(bytes, path);
     const std::string json = jsonText(bytes, binary);
     checkJsonNesting(json, path);
     {

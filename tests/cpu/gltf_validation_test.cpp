@@ -394,6 +394,24 @@ TEST(GltfValidation, GlbOfAVersionOtherThanTwoIsRefused) {
     }
 }
 
+// tinygltf counts the BIN chunk's length without its 8-byte header and would copy past the file's end.
+TEST(GltfValidation, GlbWhoseBinChunkRunsPastTheEndIsRefused) {
+    GltfBuilder gltf = test::triangleScene();
+    TempFolder folder;
+    const std::filesystem::path path = gltf.writeGlb(folder, "scene");
+    std::vector<char> bytes(std::filesystem::file_size(path));
+    std::ifstream(path, std::ios::binary).read(bytes.data(), std::streamsize(bytes.size()));
+    for (const uint32_t missing : {4u, 8u}) {
+        const uint32_t length = uint32_t(bytes.size()) - missing;  // the BIN chunk keeps its length
+        std::ofstream file(path, std::ios::binary | std::ios::trunc);
+        file.write(bytes.data(), 8);
+        file.write(reinterpret_cast<const char*>(&length), 4);
+        file.write(bytes.data() + 12, std::streamsize(length) - 12);
+        file.close();
+        expectRefused(path.string(), "the GLB's BIN chunk says it holds");
+    }
+}
+
 TEST(GltfValidation, SparseIndexPastTheCountIsRefused) {
     GltfBuilder gltf = test::triangleScene();
     const std::vector<uint8_t> which = {200};
