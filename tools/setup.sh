@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
-          libglm-dev libglfw3-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libgtest-dev libimgui-dev
+          libglm-dev libglfw3-dev libtinygltf-dev libpng-dev libturbojpeg0-dev nlohmann-json3-dev libstb-dev libgtest-dev libimgui-dev
           xvfb xauth clang-format)
 missing=()
 for package in "${packages[@]}"; do

@@ -1,10 +1,9 @@
 // glTF 2.0 (.gltf/.glb) → vct::Scene, in four steps that each finish before the next begins:
 //   1. read the scene file and vet every external URI against the file policy (file_policy.h);
 //   2. parse with tinygltf, whose file-system callbacks can read only the vetted files and whose
-//      image callback decodes the material textures' images with stb_image, turning failures into notes;
+//      image callback decodes the material textures' images (image_decoding.h), turning failures into notes;
 //   3. validate the whole model (gltf_validate.h);
 //   4. convert: flatten the node hierarchy of the default scene to world space.
-#include <stb/stb_image.h>
 
 #include <cstring>
 #include <filesystem>
@@ -23,6 +22,7 @@
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_json_checks.h"
 #include "scene/gltf_validate.h"
+#include "scene/image_decoding.h"
 #include "scene/load.h"
 #include "scene/tangent_generation.h"
 
@@ -127,23 +127,6 @@ std::string imageIdentity(const tinygltf::Image& image, const unsigned char* byt
     return "bytes " + std::string(reinterpret_cast<const char*>(bytes), size > 0 ? size_t(size) : 0);
 }
 
-// Whether each chunk of a PNG fits in the bytes there are (true for data that is not a PNG).
-// stb_image grows its buffer for the compressed data to what a chunk's header says before reading
-// the chunk: a corrupt length had it allocate 1.5 GB for a 2 KB file (tools/fuzz.sh's find,
-// tests/data/fuzz-regressions/png-chunk-length-past-end.glb).
-bool pngChunksFit(const unsigned char* bytes, size_t size) {
-    static const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-    if (size < 8 || std::memcmp(bytes, signature, 8) != 0) return true;
-    for (size_t at = 8; at + 8 <= size;) {
-        const uint64_t length = uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 |
-                                uint64_t(bytes[at + 2]) << 8 | uint64_t(bytes[at + 3]);
-        if (length + 12 > size - at) return false;  // length, type, data, CRC
-        if (std::memcmp(bytes + at + 4, "IEND", 4) == 0) return true;
-        at += size_t(length) + 12;
-    }
-    return true;
-}
-
 // Decodes a material texture's image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
 // is noted for the loader to report as a warning; only a range the file does not hold stops the load.
 bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
@@ -168,15 +151,13 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         return true;
     }
     const std::string name = image->uri.empty() ? "the embedded image" : "'" + image->uri + "'";
-    int width = 0, height = 0, channels = 0;
-    if (size > 0 && !pngChunksFit(bytes, size_t(size))) {
-        context.imageProblems[imageIndex] = name + " is a corrupt PNG: a chunk runs past the end of its bytes";
+    ImageSize imageSize;
+    const std::string unreadable = size > 0 ? readImageSize(bytes, size_t(size), imageSize) : "empty";
+    if (!unreadable.empty()) {
+        context.imageProblems[imageIndex] = name + " cannot be read: " + unreadable;
         return true;
     }
-    if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
-        context.imageProblems[imageIndex] = name + " is not an image stb_image can decode (PNG, JPEG...)";
-        return true;
-    }
+    const int width = imageSize.width, height = imageSize.height;
     if (width > kMaxImageSide || height > kMaxImageSide) {
         context.imageProblems[imageIndex] = name + " is " + std::to_string(width) + "×" + std::to_string(height) +
                                             ", larger than " + std::to_string(kMaxImageSide) + " on a side";
@@ -193,18 +174,18 @@ bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::
         return false;
     }
     context.decodedImageBytes += decodedBytes;
-    stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
-    if (!pixels) {
-        context.imageProblems[imageIndex] = name + " cannot be decoded: " + stbi_failure_reason();
+    std::vector<uint8_t> pixels;
+    const std::string undecodable = decodeImageRgba8(bytes, size_t(size), imageSize, pixels);
+    if (!undecodable.empty()) {
+        context.imageProblems[imageIndex] = name + " cannot be decoded: " + undecodable;
         return true;
     }
-    image->width = width;
-    image->height = height;
+    image->width = imageSize.width;
+    image->height = imageSize.height;
     image->component = 4;
     image->bits = 8;
     image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-    image->image.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
-    stbi_image_free(pixels);
+    image->image = std::move(pixels);
     return true;
 }
 
