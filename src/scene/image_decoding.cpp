@@ -65,7 +65,24 @@ bool readPngRows(png_structp png, png_bytepp rows) {
     return true;
 }
 
+uint32_t bigEndian32(const uint8_t* bytes) {
+    return uint32_t(bytes[0]) << 24 | uint32_t(bytes[1]) << 16 | uint32_t(bytes[2]) << 8 | uint32_t(bytes[3]);
+}
+
+// The size in the PNG's first chunk, IHDR (PNG specification §11.2.2), read without libpng, which
+// reads on to the first image data: the budget check needs no more of the file than its header.
+std::string readPngSize(const uint8_t* bytes, size_t size, ImageSize& imageSize) {
+    if (size < 8 + 8 + 13 || bigEndian32(bytes + 8) != 13 || std::memcmp(bytes + 12, "IHDR", 4) != 0)
+        return "a corrupt PNG: it does not start with its header chunk";
+    const uint32_t width = bigEndian32(bytes + 16), height = bigEndian32(bytes + 20);
+    if (width == 0 || height == 0 || width > PNG_UINT_31_MAX || height > PNG_UINT_31_MAX)
+        return "a corrupt PNG: its header gives a size of " + std::to_string(width) + "×" + std::to_string(height);
+    imageSize = {int(width), int(height)};
+    return "";
+}
+
 std::string decodePng(const uint8_t* bytes, size_t size, ImageSize& imageSize, std::vector<uint8_t>* rgba8) {
+    if (!rgba8) return readPngSize(bytes, size, imageSize);
     PngSource source{bytes, size};
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, pngFailed, pngWarned);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -78,7 +95,6 @@ std::string decodePng(const uint8_t* bytes, size_t size, ImageSize& imageSize, s
     png_set_read_fn(png, &source, readPngBytes);
     if (!readPngHeader(png, info)) return std::string("a corrupt PNG: ") + source.problem;
     imageSize = {int(png_get_image_width(png, info)), int(png_get_image_height(png, info))};
-    if (!rgba8) return "";
     const size_t rowBytes = size_t(imageSize.width) * 4;
     if (png_get_rowbytes(png, info) != rowBytes) return "a PNG libpng cannot turn into 8-bit RGBA";
     rgba8->resize(rowBytes * size_t(imageSize.height));

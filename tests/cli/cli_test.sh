@@ -293,10 +293,11 @@ case "$case_name" in
     cmp -s "$work/unlit-default.pfm" "$work/unlit-0.pfm" && fail "the default sun lit nothing"
     echo "ok: the unlit file got the named default sun and sky" ;;
   texture-bomb)
-    # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded): refused
-    # from the headers, before anything is decoded, when they exceed the budget for decoded images.
+    # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded), their CRCs
+    # right: refused from the headers, before anything is decoded, when they exceed the budget for
+    # decoded images.
     for name in a b; do
-      printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x40\x00\x00\x00\x40\x00\x08\x06\x00\x00\x00\x00\x00\x00\x00' \
+      printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x40\x00\x00\x00\x40\x00\x08\x06\x00\x00\x00\xa9\xc8\x10\x84' \
         >"$work/$name.png"
     done
     printf '%s' '{"asset":{"version":"2.0"},"images":[{"uri":"a.png"},{"uri":"b.png"}],
