@@ -1,7 +1,10 @@
 #include "scene/default_light.h"
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
+
+#include <glm/gtc/constants.hpp>
 
 #include "error.h"
 #include "scene/material_textures.h"
@@ -14,14 +17,36 @@ void checkSkyRadiance(glm::vec3 radiance) {
         throw Error("--environment must be a radiance from 0 to 1e9 in each of red, green and blue");
 }
 
+double defaultSunPowerOnBounds(const Bounds& bounds) {
+    const glm::dvec3 travel = glm::normalize(glm::dvec3(kDefaultSunTravel));
+    const glm::dvec3 extent = glm::dvec3(bounds.extent());
+    const glm::dvec3 faceAreas(extent.y * extent.z, extent.z * extent.x, extent.x * extent.y);
+    return double(kDefaultSunIlluminance) * glm::dot(glm::abs(travel), faceAreas);
+}
+
+double emittedPower(const Scene& scene) {
+    std::vector<char> emits;
+    for (const Material& material : scene.materials) emits.push_back(emitsLight(scene, material));
+    double power = 0.0;
+    for (size_t t = 0; t < scene.triangleMaterials.size(); ++t) {
+        const uint32_t material = scene.triangleMaterials[t];
+        if (material >= emits.size() || !emits[material]) continue;
+        const Vertex* v[3] = {&scene.vertices[scene.indices[3 * t]], &scene.vertices[scene.indices[3 * t + 1]],
+                              &scene.vertices[scene.indices[3 * t + 2]]};
+        const glm::dvec3 radiance = glm::dvec3(emittedRadianceOverTriangle(scene, scene.materials[material], v));
+        const double area = 0.5 * glm::length(glm::cross(glm::dvec3(v[1]->position - v[0]->position),
+                                                         glm::dvec3(v[2]->position - v[0]->position)));
+        // A Lambertian emitter of radiance L sends π·L out of each unit of its front face.
+        const double luminance = 0.2126 * radiance.r + 0.7152 * radiance.g + 0.0722 * radiance.b;
+        if (std::isfinite(area)) power += glm::pi<double>() * luminance * area;
+    }
+    return power;
+}
+
 bool sceneHasLight(const Scene& scene) {
     if (!scene.lights.empty()) return true;
     if (scene.environment.r > 0.0f || scene.environment.g > 0.0f || scene.environment.b > 0.0f) return true;
-    std::vector<char> emits;
-    for (const Material& material : scene.materials) emits.push_back(emitsLight(scene, material));
-    for (uint32_t material : scene.triangleMaterials)
-        if (material < emits.size() && emits[material]) return true;
-    return false;
+    return emittedPower(scene) >= kEmittersLightTheSceneShare * defaultSunPowerOnBounds(scene.bounds());
 }
 
 bool addDefaultSunAndSkyIfUnlit(Scene& scene) {
@@ -33,11 +58,18 @@ bool addDefaultSunAndSkyIfUnlit(Scene& scene) {
     sun.intensity = kDefaultSunIlluminance;
     scene.lights.push_back(sun);
     scene.environment = kDefaultSkyRadiance;
-    char text[300];
+    const double emitted = emittedPower(scene);
+    char why[160] = ": no light, sky or emissive surface";
+    if (emitted > 0.0)
+        std::snprintf(why, sizeof why,
+                      ": no light or sky, and its emissive surfaces send out %.2g%% of the power the default sun "
+                      "brings (too little to light it)",
+                      100.0 * emitted / defaultSunPowerOnBounds(scene.bounds()));
+    char text[420];
     std::snprintf(text, sizeof text,
-                  ": no light, sky or emissive surface, so a default sun and sky are added: the sun travelling "
-                  "along (%.2f, %.2f, %.2f) at %g lux, the sky of radiance (%g, %g, %g)",
-                  sun.direction.x, sun.direction.y, sun.direction.z, sun.intensity, kDefaultSkyRadiance.r,
+                  "%s, so a default sun and sky are added: the sun travelling along (%.2f, %.2f, %.2f) at %g lux, "
+                  "the sky of radiance (%g, %g, %g)",
+                  why, sun.direction.x, sun.direction.y, sun.direction.z, sun.intensity, kDefaultSkyRadiance.r,
                   kDefaultSkyRadiance.g, kDefaultSkyRadiance.b);
     scene.warnings.push_back(scene.name + text);
     return true;

@@ -21,8 +21,22 @@ inline constexpr glm::vec3 kDefaultSkyRadiance{0.11f, 0.14f, 0.18f};
 // what --environment takes, in vct and in vct_pathtrace alike.
 void checkSkyRadiance(glm::vec3 radiance);
 
-// True if the scene has a light, a sky (Scene::environment not black) or a triangle that emits
-// (its emission times its emissive texture's mean is not black).
+// Emissive surfaces light a scene without lights or sky when they send out at least this share of
+// the power the default sun would bring onto it. Below it they are decoration, as the glowing
+// trims of DamagedHelmet, Lantern or BoomBox are (emissiveFactor 1 through a texture that is black
+// nearly everywhere): left unlit, such a model renders black but for its glow.
+inline constexpr double kEmittersLightTheSceneShare = 0.1;
+
+// The power (W, in scene units) the default sun brings onto the scene's bounding box: its
+// illuminance times the area of the box's shadow across the sun, Σ |travelᵢ| × the faces across axis i.
+double defaultSunPowerOnBounds(const Bounds& bounds);
+
+// The power the scene's emissive triangles send out of their front faces: π × the luminance of
+// each one's mean radiance (emittedRadianceOverTriangle: its emissive texture and its holes) × its area.
+double emittedPower(const Scene& scene);
+
+// True if the scene has a light, a sky (Scene::environment not black), or emissive surfaces that
+// send out at least kEmittersLightTheSceneShare of the power the default sun would bring.
 bool sceneHasLight(const Scene& scene);
 
 // Adds the default sun and sky to a scene without light, and a warning naming them (direction,

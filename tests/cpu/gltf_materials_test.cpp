@@ -2,6 +2,8 @@
 // the warnings for extensions that change how a model looks.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/constants.hpp>
+
 #include "gltf_test_helpers.h"
 #include "scene/default_light.h"
 #include "scene/load.h"
@@ -199,6 +201,35 @@ TEST(DefaultLight, AnEmissiveSurfaceIsLightEnough) {
     Scene scene = loadBuilt(gltf);
     EXPECT_FALSE(addDefaultSunAndSkyIfUnlit(scene));
     EXPECT_TRUE(scene.lights.empty());
+}
+
+TEST(DefaultLight, AGlowTooDimToLightTheSceneGetsTheSunAndSaysHowDim) {
+    // The 2 × 2 m quad, half of it glowing at a twentieth of emissiveQuad's radiance: π·L·A = 0.37 W
+    // against the 5.98 W the default sun brings onto it (3 lux across the quad's shadow, 0.50 × 4 m²).
+    GltfBuilder gltf = emissiveQuad();
+    gltf.document["materials"][0]["emissiveFactor"] = {0.1, 0.05, 0.025};
+    Scene scene = loadBuilt(gltf);
+    EXPECT_NEAR(emittedPower(scene), glm::pi<double>() * 0.0588 * 0.5 * 4.0, 0.005);
+    EXPECT_NEAR(defaultSunPowerOnBounds(scene.bounds()), 3.0 * 0.6 / glm::length(kDefaultSunTravel) * 4.0, 1e-4);
+    EXPECT_FALSE(sceneHasLight(scene));
+    EXPECT_TRUE(addDefaultSunAndSkyIfUnlit(scene));
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("no light or sky, and its emissive surfaces send out 6.2% of the power the "
+                                     "default sun brings (too little to light it), so a default sun and sky are added"),
+              std::string::npos)
+        << scene.warnings[0];
+}
+
+TEST(DefaultLight, EveryBuiltInSceneHasALightOfItsOwn) {
+    // Their references were path-traced under their own lights: none may gain the default sun.
+    for (const std::string& name : builtinSceneNames()) {
+        Scene scene = loadScene(name);
+        EXPECT_TRUE(sceneHasLight(scene)) << name;
+        if (scene.lights.empty()) {
+            EXPECT_GT(emittedPower(scene), 1.5 * kEmittersLightTheSceneShare * defaultSunPowerOnBounds(scene.bounds()))
+                << name << ": its lamps are near the threshold";
+        }
+    }
 }
 
 TEST(DefaultLight, AnEmissiveFactorThroughABlackTextureIsNoLight) {
