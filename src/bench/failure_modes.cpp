@@ -1,5 +1,6 @@
 #include "bench/failure_modes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -32,8 +33,14 @@ double relativeL1Difference(const Image& a, const Image& b) {
 
 namespace {
 
-// A one-sided quad as two triangles, corners in order around it; `normal` is its shading normal.
-void addQuad(Scene& scene, const std::array<glm::vec3, 4>& corners, glm::vec3 normal, uint32_t material) {
+// A quad as two triangles, corners in order around it, wound counter-clockwise seen from the side
+// `normal` (its shading normal) points to, as glTF's front faces are and the voxels take their side
+// from. (Wound as listed, the two rooms' floor, front wall, far end and shared wall faced away from
+// their normals, and the leak measured was that of a wall facing the dark room, whose voxels the
+// dark room's cones could not see through.)
+void addQuad(Scene& scene, std::array<glm::vec3, 4> corners, glm::vec3 normal, uint32_t material) {
+    if (glm::dot(glm::cross(corners[1] - corners[0], corners[2] - corners[0]), normal) < 0.0f)
+        std::reverse(corners.begin(), corners.end());
     const uint32_t first = uint32_t(scene.vertices.size());
     for (const glm::vec3& corner : corners) scene.vertices.push_back({corner, 0.0f, normal, 0.0f});
     for (uint32_t index : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + index);
@@ -64,7 +71,16 @@ Material lambertianWhite(float albedo) {
 
 }  // namespace
 
-Scene makeTwoRoomScene(float wallX) {
+const char* sharedWallName(SharedWall wall) {
+    switch (wall) {
+        case SharedWall::SheetFacingLitRoom: return "sheet-facing-lit-room";
+        case SharedWall::SheetFacingDarkRoom: return "sheet-facing-dark-room";
+        case SharedWall::TwoFaces: break;
+    }
+    return "two-faces";
+}
+
+Scene makeTwoRoomScene(float wallX, SharedWall wall) {
     Scene scene;
     scene.name = "two rooms";
     scene.materials.push_back(lambertianWhite(0.7f));  // no specular cone: the leak is all diffuse
@@ -77,8 +93,18 @@ Scene makeTwoRoomScene(float wallX) {
     addQuad(scene, {{{-1, 0, 1}, {1, 0, 1}, {1, 1, 1}, {-1, 1, 1}}}, {0, 0, -1}, 0);   // front
     addQuad(scene, {{{-1, 0, 0}, {-1, 1, 0}, {-1, 1, 1}, {-1, 0, 1}}}, {1, 0, 0}, 0);  // lit room's end
     addQuad(scene, {{{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}}, {-1, 0, 0}, 0);     // dark room's end
-    // The shared wall: one quad of zero thickness, reflecting on both sides like every surface.
-    addQuad(scene, {{{wallX, 0, 0}, {wallX, 1, 0}, {wallX, 1, 1}, {wallX, 0, 1}}}, {-1, 0, 0}, 0);
+    // The shared wall, reflecting on both sides like every surface.
+    auto addWall = [&](float x, float facing) {
+        addQuad(scene, {{{x, 0, 0}, {x, 1, 0}, {x, 1, 1}, {x, 0, 1}}}, {facing, 0, 0}, 0);
+    };
+    switch (wall) {
+        case SharedWall::SheetFacingLitRoom: addWall(wallX, -1.0f); break;
+        case SharedWall::SheetFacingDarkRoom: addWall(wallX, 1.0f); break;
+        case SharedWall::TwoFaces:
+            addWall(wallX - 0.5f * kTwoFacedWallThickness, -1.0f);
+            addWall(wallX + 0.5f * kTwoFacedWallThickness, 1.0f);
+            break;
+    }
 
     Light light;
     light.name = "lit room's light";
@@ -123,8 +149,8 @@ SelfIllumination measureSelfIllumination(GpuContext& context, RenderSettings set
 Camera litRoomCamera() { return roomCamera({-0.97f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.0f}); }
 Camera darkRoomCamera() { return roomCamera({0.97f, 0.5f, 0.5f}, {-1.0f, 0.0f, 0.0f}); }
 
-LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX) {
-    Renderer renderer(context, makeTwoRoomScene(wallX), settings);
+LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX, SharedWall wall) {
+    Renderer renderer(context, makeTwoRoomScene(wallX, wall), settings);
     LeakMeasurement leak;
     renderer.setCamera(litRoomCamera());
     renderer.renderFrame();

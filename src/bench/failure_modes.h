@@ -23,10 +23,19 @@ bool allFiniteAndNonNegative(const Image& image);
 // Σ|a − b| / Σ|a| over all channels: how much of the image changed (0 = identical). Same sizes.
 double relativeL1Difference(const Image& a, const Image& b);
 
-// ---- Light leaking: two 1 m rooms side by side along x share a wall of zero thickness (thinner
-// than any voxel) at x = wallX. A point light hangs in the lit room (x < wallX); the dark room
-// receives no light at all, so its ground truth is exactly 0.
-Scene makeTwoRoomScene(float wallX);
+// ---- Light leaking: two 1 m rooms side by side along x share a wall thinner than any voxel at
+// x = wallX. A point light hangs in the lit room (x < wallX); the dark room receives no light at
+// all, so its ground truth is exactly 0.
+// The wall: one sheet of zero thickness facing either room (a double-sided quad, as files often
+// model a thin wall: the voxels take one side from its winding), or two faces 1 cm apart, each
+// facing its room (a wall with a thickness).
+enum class SharedWall { SheetFacingLitRoom, SheetFacingDarkRoom, TwoFaces };
+inline constexpr SharedWall kSharedWalls[] = {SharedWall::SheetFacingLitRoom, SharedWall::SheetFacingDarkRoom,
+                                              SharedWall::TwoFaces};
+// "sheet-facing-lit-room", "sheet-facing-dark-room", "two-faces".
+const char* sharedWallName(SharedWall wall);
+inline constexpr float kTwoFacedWallThickness = 0.01f;  // metres: a third of a voxel at 64³
+Scene makeTwoRoomScene(float wallX, SharedWall wall);
 // Cameras inside each room, looking at the shared wall.
 Camera litRoomCamera();
 Camera darkRoomCamera();
@@ -37,7 +46,7 @@ struct LeakMeasurement {
     // darkRoomLuminance / litRoomLuminance: the leaked share of the light on the other side.
     double leakRatio() const { return litRoomLuminance > 0.0 ? darkRoomLuminance / litRoomLuminance : 0.0; }
 };
-LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX);
+LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX, SharedWall wall);
 
 // ---- Self-illumination: a lone 2 m square lit by a sun 45° up, and nothing else. No light can
 // reach it twice, so its true indirect light is 0: whatever indirect light it gets, it gathered from

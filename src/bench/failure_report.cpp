@@ -38,9 +38,11 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
 
     // The fitted grid gives the leak measurement its voxel size (the two rooms span 2 m along x).
     const float voxel =
-        fitVoxelGrid(makeTwoRoomScene(0.0f).bounds(), settings.resources.voxelResolution).originVoxelSize.w;
-    for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
-        report.leaks.push_back({offset, measureLightLeak(context, settings, offset * voxel)});
+        fitVoxelGrid(makeTwoRoomScene(0.0f, SharedWall::TwoFaces).bounds(), settings.resources.voxelResolution)
+            .originVoxelSize.w;
+    for (SharedWall wall : kSharedWalls)
+        for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
+            report.leaks.push_back({wall, offset, measureLightLeak(context, settings, offset * voxel, wall)});
 
     const Scene cornell = loadScene("cornell");
     RenderSettings indirect = settings;
@@ -61,8 +63,10 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
 std::string failureModesText(const FailureModeReport& report) {
     std::string text = "failure modes (" + report.setting + "):\n";
     for (const FailureModeReport::Leak& leak : report.leaks)
-        text += format("  leak, wall %+.2f voxel into its voxel: dark room %.4f of the lit room (truth 0)\n",
-                       double(leak.wallOffsetVoxels), leak.measurement.leakRatio());
+        text += format(
+            "  leak, %s wall %+.2f voxel into its voxel: dark room %.4f of the lit room (truth 0), lit room %.3f\n",
+            sharedWallName(leak.wall), double(leak.wallOffsetVoxels), leak.measurement.leakRatio(),
+            leak.measurement.litRoomLuminance);
     for (const ResolutionLuminance& r : report.drift) {
         text += format("  Cornell first bounce at %3u³: mean luminance %.4f", r.voxelResolution, r.meanLuminance);
         if (report.driftReference > 0.0)
@@ -84,7 +88,8 @@ std::string failureModesJson(const FailureModeReport& report) {
     std::string json = "{\n  \"setting\": " + jsonString(report.setting) + ",\n  \"leak\": [";
     for (size_t i = 0; i < report.leaks.size(); ++i) {
         const FailureModeReport::Leak& leak = report.leaks[i];
-        json += std::string(i ? "," : "") + "\n    {\"wall_offset_voxels\": " + jsonNumber(leak.wallOffsetVoxels) +
+        json += std::string(i ? "," : "") + "\n    {\"wall\": " + jsonString(sharedWallName(leak.wall)) +
+                ", \"wall_offset_voxels\": " + jsonNumber(leak.wallOffsetVoxels) +
                 ", \"lit_room\": " + jsonNumber(leak.measurement.litRoomLuminance) +
                 ", \"dark_room\": " + jsonNumber(leak.measurement.darkRoomLuminance) +
                 ", \"ratio\": " + jsonNumber(leak.measurement.leakRatio()) + "}";

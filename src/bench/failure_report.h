@@ -15,6 +15,7 @@ namespace vct::bench {
 struct FailureModeReport {
     std::string setting;  // the settings' label (matrix.h)
     struct Leak {
+        SharedWall wall = SharedWall::TwoFaces;
         float wallOffsetVoxels = 0.0f;  // where the wall sits inside its voxel
         LeakMeasurement measurement;
     };

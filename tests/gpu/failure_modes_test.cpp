@@ -2,6 +2,7 @@
 // held to stated bounds: light leaking through thin walls, brightness that drifts with the voxel
 // resolution, and flicker under small camera or light moves.
 #include <cstdio>
+#include <iterator>
 
 #include "bench/failure_modes.h"
 #include "gpu_test.h"
@@ -14,15 +15,21 @@ namespace {
 
 // Bounds from the measurements (printed by each test), so that a regression shows. They record the
 // renderer as it is, not what it should reach:
-// - leak: 0.1 % (wall on a voxel boundary) to 1.3 % (wall half a voxel in) of the lit room's mean
-//   at 32³ with converged bounces; the ground truth is 0.
+// - leak (ground truth 0), at 32² with converged bounces, the wall on a voxel boundary, a third and
+//   half a voxel in: a single sheet facing the lit room 41 / 40 / 33 % of the lit room's mean, facing
+//   the dark room 0.4 / 0.6 / 2.6 % (but the lit room then loses a third of its light through it),
+//   two faces 1 cm apart 8.8 / 10.6 / 11.3 %. Walls thinner than the coarse texels the cones read
+//   leak through their trilinear filtering, and a sheet's voxels are see-through from behind. Until
+//   the two rooms' quads were wound to face their normals, this measured 0.1-1.3 %: the wall then
+//   faced the dark room and the floor faced down, out of the rooms.
 // - brightness against resolution (Cornell box, first bounce, 32² × 2², anisotropic): 0.91, 0.86,
 //   0.81, 0.81 × its one-bounce path-traced truth at 32³, 64³, 128³, 256³ (spread 12 %). The
 //   coarsest grid's voxels are thicker than the surfaces they hold and reflect a little more.
 // - flicker: 1 mm camera or light steps change 0.3–0.8 % of the image (relative L1).
 // - self-illumination: a lone lit plane gets no indirect light at all (0.00 %).
 struct FailureBounds {
-    double leakRatio = 0.02;            // dark room / lit room mean luminance, ground truth 0
+    // Dark room / lit room mean luminance, ground truth 0, by wall (bench::kSharedWalls' order).
+    double leakRatio[3] = {0.45, 0.03, 0.13};
     double resolutionSpread = 0.20;     // (max − min) / mean of the first bounce's luminance, 32³…256³
     double groundTruthRatioLow = 0.55;  // first-bounce luminance / its path-traced truth, each resolution
     double groundTruthRatioHigh = 1.10;
@@ -44,18 +51,21 @@ RenderSettings smallSettings(uint32_t size, uint32_t voxels) {
 
 class FailureModes : public GpuTest {};
 
-TEST_F(FailureModes, ThinWallLeaksAlmostNoLightIntoTheDarkRoom) {
+TEST_F(FailureModes, ThinWallsLeakNoMoreLightIntoTheDarkRoomThanTheyDid) {
     // The wall on a voxel boundary (x = 0 is one, the grid being centred on the scene) and inside
-    // a voxel (a third of the way through one at 64³).
+    // a voxel (a third of the way through one at 64³), as one sheet facing either room or as two faces.
     const RenderSettings settings = smallSettings(32, 64);
     const float voxel = 2.0f / 62.0f;
-    for (float wallX : {0.0f, voxel / 3.0f, -voxel / 2.0f}) {
-        const bench::LeakMeasurement leak = bench::measureLightLeak(gpu(), settings, wallX);
-        std::printf("[ leak ] wall at x = %+.4f m: lit room %.5f, dark room %.6f, ratio %.5f\n", wallX,
-                    leak.litRoomLuminance, leak.darkRoomLuminance, leak.leakRatio());
-        EXPECT_GT(leak.litRoomLuminance, 0.01);
-        EXPECT_LE(leak.leakRatio(), kBounds.leakRatio) << "wall at x = " << wallX;
-    }
+    for (size_t w = 0; w < std::size(bench::kSharedWalls); ++w)
+        for (float wallX : {0.0f, voxel / 3.0f, -voxel / 2.0f}) {
+            const bench::SharedWall wall = bench::kSharedWalls[w];
+            const bench::LeakMeasurement leak = bench::measureLightLeak(gpu(), settings, wallX, wall);
+            std::printf("[ leak ] %s wall at x = %+.4f m: lit room %.5f, dark room %.6f, ratio %.5f\n",
+                        bench::sharedWallName(wall), wallX, leak.litRoomLuminance, leak.darkRoomLuminance,
+                        leak.leakRatio());
+            EXPECT_GT(leak.litRoomLuminance, 0.01);
+            EXPECT_LE(leak.leakRatio(), kBounds.leakRatio[w]) << bench::sharedWallName(wall) << " at x = " << wallX;
+        }
 }
 
 TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTracer) {

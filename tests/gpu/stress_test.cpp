@@ -191,12 +191,15 @@ TEST_F(Stress, FlatSceneWithZeroExtentAlongOneAxisLightsItselfNot) {
 }
 
 TEST_F(Stress, WallOnAVoxelBoundaryLooksLikeAWallInsideAVoxel) {
-    // The two-room scene's grid is centred on x = 0, a voxel boundary at every resolution.
+    // The two-room scene's grid is centred on x = 0, a voxel boundary at every resolution. The wall
+    // is one sheet facing the lit room: two faces 1 cm apart inside one voxel cancel each other's
+    // normal there, and the voxel takes no light (the lit room 1.12 against 1.43 with the faces in
+    // voxels of their own: bench::measureLightLeak reports it).
     RenderSettings settings = smallSettings(32, 64);
     double luminance[2];
     for (int i = 0; i < 2; ++i) {
         const float wallX = i == 0 ? 0.0f : 0.5f * 2.0f / 62.0f;  // on the boundary, half a voxel in
-        Renderer renderer(gpu(), bench::makeTwoRoomScene(wallX), settings);
+        Renderer renderer(gpu(), bench::makeTwoRoomScene(wallX, bench::SharedWall::SheetFacingLitRoom), settings);
         renderer.setCamera(bench::litRoomCamera());
         luminance[i] = bench::meanLuminance(render(renderer, i == 0 ? "wall on boundary" : "wall inside"));
     }
