@@ -358,6 +358,28 @@ TEST_F(View, SceneWarningsAreShownInTheWindow) {
         << "the warning is not shown in the window";
 }
 
+TEST_F(View, AFileLitOnlyByADimGlowGetsTheDefaultSunAndSkyAsRenderDoes) {
+    // One triangle glowing at radiance 0.05: 2 % of the power the default sun brings onto it, a
+    // trim rather than a lamp (DamagedHelmet's kind). Both commands add the default sun and sky,
+    // and say so in the same words; before, the viewer added a sun of its own and render none.
+    std::ofstream(directory / "glow.gltf")
+        << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
+        << R"(AACAvwAAgL8AAIC/AACAPwAAgL8AAIA/AAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-1],)"
+        << R"("max":[1,1,1]}],"materials":[{"emissiveFactor":[0.05,0.05,0.05]}],)"
+        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
+        << R"("scenes":[{"nodes":[0]}],"scene":0})";
+    const std::string added = "its emissive surfaces send out 2.3% of the power the default sun brings (too "
+                              "little to light it), so a default sun and sky are added";
+    ASSERT_EQ(runViewer("--scene glow.gltf --screenshot view.png --frames 2"), 0) << log;
+    EXPECT_NE(log.find(added), std::string::npos) << log;
+    const std::string render = "cd '" + directory.string() + "' && " VCT_EXECUTABLE
+                               " render --scene glow.gltf --voxels 64 --width 64 --height 64 --out render.pfm "
+                               "> render.txt 2>&1";
+    ASSERT_EQ(std::system(render.c_str()), 0) << readText(directory / "render.txt");
+    EXPECT_NE(readText(directory / "render.txt").find(added), std::string::npos) << readText(directory / "render.txt");
+}
+
 TEST_F(View, DimmingALightInTheScenePanelRerunsOnlyTheLightPasses) {
     // 640×360, the Cornell box: light 0 is its point light, light 1 the viewer's sun. A click opens
     // light 0's node in the Lights section; a drag to the left across its intensity field takes the
