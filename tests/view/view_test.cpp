@@ -369,11 +369,13 @@ TEST_F(View, AFileLitOnlyByADimGlowGetsTheDefaultSunAndSkyAsRenderDoes) {
         << R"("max":[1,1,1]}],"materials":[{"emissiveFactor":[0.05,0.05,0.05]}],)"
         << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)"
         << R"("scenes":[{"nodes":[0]}],"scene":0})";
-    const std::string added = "its emissive surfaces send out 2.3% of the power the default sun brings (too "
-                              "little to light it), so a default sun and sky are added";
+    const std::string added =
+        "its emissive surfaces send out 2.3% of the power the default sun brings (too "
+        "little to light it), so a default sun and sky are added";
     ASSERT_EQ(runViewer("--scene glow.gltf --screenshot view.png --frames 2"), 0) << log;
     EXPECT_NE(log.find(added), std::string::npos) << log;
-    const std::string render = "cd '" + directory.string() + "' && " VCT_EXECUTABLE
+    const std::string render = "cd '" + directory.string() +
+                               "' && " VCT_EXECUTABLE
                                " render --scene glow.gltf --voxels 64 --width 64 --height 64 --out render.pfm "
                                "> render.txt 2>&1";
     ASSERT_EQ(std::system(render.c_str()), 0) << readText(directory / "render.txt");
