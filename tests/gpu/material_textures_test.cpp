@@ -2,7 +2,9 @@
 #include <cmath>
 
 #include "../cpu/gltf_test_helpers.h"
+#include "bench/metrics.h"
 #include "gpu_test.h"
+#include "path_tracer.h"
 #include "render/renderer.h"
 #include "scene/default_light.h"
 #include "scene/load.h"
@@ -242,6 +244,50 @@ TEST_F(MaterialTextures, ATexturedWallBleedsItsTexturesColourIntoTheIndirectLigh
         colouredSum.r, colouredSum.g, colouredSum.b, texturedSum.r, texturedSum.g, texturedSum.b);
     ASSERT_GT(colouredSum.r, 2.0 * colouredSum.g) << "the red wall tints the floor's indirect light";
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(texturedSum[c], colouredSum[c], 0.01 * colouredSum[c]) << "channel " << c;
+}
+
+TEST_F(MaterialTextures, ATexturedQuadsDirectLightMatchesThePathTracer) {
+    // The quad under the default sun with a 4 × 4 checker of base colours and a metallic-roughness
+    // texture whose rows alternate polished metal and rough paint: the renderer's direct light (one
+    // sample a pixel, the textures through their mip chains) against the path tracer's (256 samples
+    // a pixel, bilinear), which shares the loader and the material model but not one line of shading.
+    GltfBuilder gltf = quadFacingCamera();
+    std::vector<uint16_t> checker, metalRough;
+    const uint16_t colours[4][3] = {{230, 60, 40}, {60, 200, 90}, {50, 80, 220}, {240, 240, 230}};
+    for (uint32_t y = 0; y < 4; ++y)
+        for (uint32_t x = 0; x < 4; ++x) {
+            const uint16_t* colour = colours[(x + 2 * y) % 4];
+            checker.insert(checker.end(), {colour[0], colour[1], colour[2], 255});
+            // glTF: green = roughness, blue = metallic.
+            metalRough.insert(metalRough.end(), y % 2 ? std::initializer_list<uint16_t>{0, 60, 255, 255}
+                                                      : std::initializer_list<uint16_t>{0, 220, 0, 255});
+        }
+    gltf.document["images"] =
+        json::array({{{"uri", "data:image/png;base64," + base64(encodePng(4, 4, 4, 8, checker))}},
+                     {{"uri", "data:image/png;base64," + base64(encodePng(4, 4, 4, 8, metalRough))}}});
+    gltf.document["samplers"] = json::array({{{"magFilter", 9728}}});  // nearest: sharp cells in both
+    gltf.document["textures"] = json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 1}, {"sampler", 0}}});
+    gltf.document["materials"][0] = {
+        {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 1}}}}}};
+    Scene scene = loadBuilt(gltf);
+    ASSERT_TRUE(addDefaultSunAndSkyIfUnlit(scene));
+    Renderer renderer(gpu(), scene, directSettings());
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+
+    pt::PathTracer tracer = pt::createPathTracer(scene);
+    pt::RenderSettings reference;
+    reference.width = reference.height = kSize;
+    reference.samplesPerPixel = 256;
+    reference.component = pt::Component::Direct;
+    reference.threads = 1;
+    reference.camera = scene.cameras.front();
+    const Image truth = pt::render(tracer, reference).image;
+    const bench::ImageError error = bench::compareImages(image, truth);
+    std::printf("[ textures ] direct light against the path tracer: luminance %.4f of it, relMSE %.4f\n",
+                error.luminanceRatio, error.relMse);
+    EXPECT_NEAR(error.luminanceRatio, 1.0, 0.02);
+    EXPECT_LT(error.relMse, 0.02);
 }
 
 }  // namespace
