@@ -1,5 +1,5 @@
-# Runs `vct bench --preset fast` on a tiny image and checks failure_modes.json: three leak
-# measurements, the Cornell box's first bounce at 32³…256³ voxels, a lone plane's self-illumination
+# Runs `vct bench --preset fast` on a tiny image and checks failure_modes.json: nine leak
+# measurements (three walls at three places in their voxel), the Cornell box's first bounce at 32³…256³ voxels, a lone plane's self-illumination
 # and the flicker figures, all
 # finite numbers (the JSON writes non-finite numbers as null), every image finite.
 #   cmake -DVCT=path/to/vct -DOUT_DIR=dir -P check_bench_failure_modes.cmake
@@ -24,12 +24,16 @@ function(expect_number)
 endfunction()
 
 string(JSON leaks LENGTH "${json}" leak)
-if(NOT leaks EQUAL 3)
-  message(FATAL_ERROR "failure_modes.json has ${leaks} leak measurements, expected 3")
+if(NOT leaks EQUAL 9)
+  message(FATAL_ERROR "failure_modes.json has ${leaks} leak measurements, expected 9")
 endif()
-foreach(i 0 1 2)
+foreach(i RANGE 8)
   expect_number(leak ${i} ratio)
   expect_number(leak ${i} lit_room)
+  string(JSON wall ERROR_VARIABLE json_error GET "${json}" leak ${i} wall)
+  if(json_error OR wall STREQUAL "")
+    message(FATAL_ERROR "failure_modes.json: leak ${i} does not name its wall (${json_error})")
+  endif()
 endforeach()
 string(JSON resolutions LENGTH "${json}" resolution_drift resolutions)
 if(NOT resolutions EQUAL 4)
