@@ -141,7 +141,7 @@ std::vector<Option> makeSharedOptions() {
         {"environment", "R,G,B|FILE.hdr",
          "the sky every ray leaving the scene sees: a uniform radiance, or an equirectangular Radiance "
          "image (its centre looks along -Z, its top up) (default black; a scene without light gets a "
-         "default sky with its default sun)"},
+         "default sky with its default sun, unless this names its sky, 0,0,0 included)"},
         {"environment-rotation", "DEGREES",
          "turn the --environment image about +Y, counter-clockwise seen from above (default 0)"},
         {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},

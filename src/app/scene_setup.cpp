@@ -61,12 +61,13 @@ Scene loadSceneFromArguments(const Arguments& arguments, const SceneBufferLimits
     options.allowedRoot = arguments.text("allowed-root", "");
     Scene scene = loadScene(arguments.text("scene", "cornell"), options);
     const SceneOverrides overrides = sceneOverridesFromArguments(arguments);
-    // --light-dir's sun is light enough, and so is --environment's sky; --light-intensity alone
-    // sets the default sun's.
+    // --light-dir's sun is light enough, and so is --environment's sky, black included (the way to
+    // render a file lit by its own glow alone); --light-intensity alone sets the default sun's.
     if (overrides.environment) scene.environment = *overrides.environment;
     if (!overrides.environmentImage.empty()) useEnvironmentImage(scene, loadEnvironmentImage(overrides));
     scene.environmentRotation = overrides.environmentRotation;
-    if (!overrides.lightDirection) addDefaultSunAndSkyIfUnlit(scene);
+    if (!overrides.lightDirection && !overrides.environment && overrides.environmentImage.empty())
+        addDefaultSunAndSkyIfUnlit(scene);
     applySceneOverrides(overrides, scene);
     return scene;
 }

@@ -291,7 +291,12 @@ case "$case_name" in
     notes=$(grep -c "default sun and sky are added: the sun travelling along (0.25, -0.83, -0.50) at 3 lux, the sky of radiance (0.11, 0.14, 0.18)" "$work/stderr")
     [ "$notes" -eq 1 ] || fail "$notes lines name the default sun and sky, expected 1"
     cmp -s "$work/unlit-default.pfm" "$work/unlit-0.pfm" && fail "the default sun lit nothing"
-    echo "ok: the unlit file got the named default sun and sky" ;;
+    # A black sky is a sky: the file stays unlit, and no line says otherwise.
+    "$vct" render "${small[@]}" --scene "$work/unlit.gltf" --mode direct --environment 0,0,0 \
+      --out "$work/unlit-black-sky.pfm" >"$work/stdout" 2>"$work/stderr" || fail "the render failed"
+    grep -q "default sun" "$work/stderr" && fail "--environment 0,0,0 still added the default sun"
+    cmp -s "$work/unlit-default.pfm" "$work/unlit-black-sky.pfm" && fail "--environment 0,0,0 changed nothing"
+    echo "ok: the unlit file got the named default sun and sky, and none under a black sky" ;;
   texture-bomb)
     # Two PNG headers of a few dozen bytes claiming 16384² pixels (1 GiB each decoded), their CRCs
     # right: refused from the headers, before anything is decoded, when they exceed the budget for

@@ -35,7 +35,8 @@ constexpr const char* kUsage =
     "  --environment R,G,B|FILE.hdr\n"
     "                            the sky: a uniform radiance or an equirectangular Radiance image, as in\n"
     "                            vct render (default black; a scene without light gets the default sun\n"
-    "                            and sky). The sky camera rays meet is direct light, the sky's light on\n"
+    "                            and sky, unless this names its sky, 0,0,0 included). The sky camera\n"
+    "                            rays meet is direct light, the sky's light on\n"
     "                            surfaces indirect\n"
     "  --environment-rotation DEGREES\n"
     "                            turn the environment image about +Y, counter-clockwise seen from above\n"
@@ -175,7 +176,8 @@ int run(int argc, char** argv) {
             scene, std::make_shared<const vct::EnvironmentMap>(vct::loadEnvironmentMap(options.environmentImage)));
     if (options.environmentRotationDegrees)
         scene.environmentRotation = glm::radians(*options.environmentRotationDegrees);
-    vct::addDefaultSunAndSkyIfUnlit(scene);  // the light `vct render` gives a scene without any
+    // The light `vct render` gives a scene without any, unless --environment names the sky (black too).
+    if (!options.environment && options.environmentImage.empty()) vct::addDefaultSunAndSkyIfUnlit(scene);
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     options.settings.camera = chooseCamera(scene, options);
     pt::PathTracer tracer = pt::createPathTracer(scene);
