@@ -276,7 +276,7 @@ TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight)
     // Inside the tall block, whose inner faces no light reaches: the ground truth is black. The
     // shadow maps get that right; the cones do not: the block's faces are thinner than a voxel, and
     // cones starting on their inner side see the lit outer side's voxels (the light leak of
-    // FailureModes.ThinWallLeaks…, at its worst in a closed box), and one-sided voxels are
+    // FailureModes.ThinWallsLeak…, at its worst in a closed box), and one-sided voxels are
     // transparent from behind. Bounded (kTolerances.insideGeometry) so that it cannot grow unnoticed.
     const Scene cornell = loadScene("cornell");
     Renderer renderer(gpu(), cornell, smallSettings(32, 64));
