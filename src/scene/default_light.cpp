@@ -43,14 +43,29 @@ double emittedPower(const Scene& scene) {
     return power;
 }
 
+namespace {
+
+bool hasLightOrSky(const Scene& scene) {
+    return !scene.lights.empty() || scene.environment.r > 0.0f || scene.environment.g > 0.0f ||
+           scene.environment.b > 0.0f;
+}
+
+// Emitted power over what the default sun would bring: lit by its emitters from kEmittersLightTheSceneShare on.
+double emittedShareOfDefaultSun(const Scene& scene) {
+    const double emitted = emittedPower(scene);
+    return emitted > 0.0 ? emitted / defaultSunPowerOnBounds(scene.bounds()) : 0.0;
+}
+
+}  // namespace
+
 bool sceneHasLight(const Scene& scene) {
-    if (!scene.lights.empty()) return true;
-    if (scene.environment.r > 0.0f || scene.environment.g > 0.0f || scene.environment.b > 0.0f) return true;
-    return emittedPower(scene) >= kEmittersLightTheSceneShare * defaultSunPowerOnBounds(scene.bounds());
+    return hasLightOrSky(scene) || emittedShareOfDefaultSun(scene) >= kEmittersLightTheSceneShare;
 }
 
 bool addDefaultSunAndSkyIfUnlit(Scene& scene) {
-    if (sceneHasLight(scene)) return false;
+    if (hasLightOrSky(scene)) return false;
+    const double emittedShare = emittedShareOfDefaultSun(scene);  // the emitters' pass, once
+    if (emittedShare >= kEmittersLightTheSceneShare) return false;
     Light sun;
     sun.name = kDefaultSunName;
     sun.type = LightType::Directional;
@@ -58,13 +73,12 @@ bool addDefaultSunAndSkyIfUnlit(Scene& scene) {
     sun.intensity = kDefaultSunIlluminance;
     scene.lights.push_back(sun);
     scene.environment = kDefaultSkyRadiance;
-    const double emitted = emittedPower(scene);
     char why[160] = ": no light, sky or emissive surface";
-    if (emitted > 0.0)
+    if (emittedShare > 0.0)
         std::snprintf(why, sizeof why,
                       ": no light or sky, and its emissive surfaces send out %.2g%% of the power the default sun "
                       "brings (too little to light it)",
-                      100.0 * emitted / defaultSunPowerOnBounds(scene.bounds()));
+                      100.0 * emittedShare);
     char text[420];
     std::snprintf(text, sizeof text,
                   "%s, so a default sun and sky are added: the sun travelling along (%.2f, %.2f, %.2f) at %g lux, "

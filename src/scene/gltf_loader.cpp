@@ -127,7 +127,7 @@ std::string imageIdentity(const tinygltf::Image& image, const unsigned char* byt
     return "bytes " + std::string(reinterpret_cast<const char*>(bytes), size > 0 ? size_t(size) : 0);
 }
 
-// Decodes a material texture's image to RGBA8 (stb_image also reduces 16-bit PNGs to 8 bits). A failure
+// Decodes a material texture's image to RGBA8 (image_decoding.h, 16-bit PNGs reduced to 8 bits). A failure
 // is noted for the loader to report as a warning; only a range the file does not hold stops the load.
 bool loadImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
