@@ -61,8 +61,6 @@ inline std::string base64(const std::string& bytes) {
     return out;
 }
 
-// A PNG with stored (uncompressed) deflate blocks: enough to test 8- and 16-bit decoding.
-// `samples` holds width × height × channels values (big-endian when 16-bit, as PNG stores them).
 // The CRC-32 a PNG chunk ends with, of its type and data (PNG specification §5.5).
 inline uint32_t pngCrc32(const std::string& typeAndData) {
     uint32_t crc = 0xFFFFFFFFu;
@@ -73,14 +71,19 @@ inline uint32_t pngCrc32(const std::string& typeAndData) {
     return ~crc;
 }
 
+inline std::string bigEndian32(uint32_t value) {
+    return std::string{char(value >> 24), char(value >> 16), char(value >> 8), char(value)};
+}
+
+// A PNG chunk: its length, type, data and CRC.
+inline std::string pngChunk(const std::string& type, const std::string& data) {
+    return bigEndian32(uint32_t(data.size())) + type + data + bigEndian32(pngCrc32(type + data));
+}
+
+// A PNG with stored (uncompressed) deflate blocks: enough to test 8- and 16-bit decoding.
+// `samples` holds width × height × channels values (big-endian when 16-bit, as PNG stores them).
 inline std::string encodePng(uint32_t width, uint32_t height, int channels, int bitDepth,
                              const std::vector<uint16_t>& samples) {
-    auto be32 = [](uint32_t value) {
-        return std::string{char(value >> 24), char(value >> 16), char(value >> 8), char(value)};
-    };
-    auto chunk = [&](const std::string& type, const std::string& data) {
-        return be32(uint32_t(data.size())) + type + data + be32(pngCrc32(type + data));
-    };
     std::string raw;  // filter byte 0 then the samples of each row
     for (uint32_t y = 0; y < height; ++y) {
         raw += '\0';
@@ -107,10 +110,12 @@ inline std::string encodePng(uint32_t width, uint32_t height, int channels, int 
         a = (a + byte) % 65521;
         b = (b + a) % 65521;
     }
-    zlib += be32((b << 16) | a);
+    zlib += bigEndian32((b << 16) | a);
     const char colorType = "\0\4\2\6"[channels - 1];  // grey, grey + alpha, RGB, RGBA
-    const std::string header = be32(width) + be32(height) + char(bitDepth) + colorType + std::string(3, '\0');
-    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", zlib) + chunk("IEND", "");
+    const std::string header =
+        bigEndian32(width) + bigEndian32(height) + char(bitDepth) + colorType + std::string(3, '\0');
+    return std::string("\x89PNG\r\n\x1a\n", 8) + pngChunk("IHDR", header) + pngChunk("IDAT", zlib) +
+           pngChunk("IEND", "");
 }
 
 // Builds a glTF document: JSON plus one binary buffer that the write functions place in a .bin

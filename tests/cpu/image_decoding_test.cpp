@@ -50,11 +50,7 @@ TEST(ImageDecoding, APngsGammaIsIgnoredAsGltfSays) {
     // glTF 2.0 §3.8.3: colour space information in the image is ignored. A gAMA of 1.0 after the
     // header would have libpng's gamma handling re-encode the samples; they come back as stored.
     std::string png = test::encodePng(2, 1, 3, 8, {10, 20, 30, 128, 64, 32});
-    const std::string gamma = std::string("gAMA") + std::string("\x00\x01\x86\xa0", 4);  // 100000 = 1.0
-    const uint32_t crc = test::pngCrc32(gamma);
-    const std::string chunk =
-        std::string("\0\0\0\4", 4) + gamma + std::string{char(crc >> 24), char(crc >> 16), char(crc >> 8), char(crc)};
-    png.insert(8 + 25, chunk);  // after the signature and IHDR
+    png.insert(8 + 25, test::pngChunk("gAMA", test::bigEndian32(100000)));  // 1.0, after the signature and IHDR
     ImageSize size;
     std::vector<uint8_t> rgba8;
     ASSERT_EQ(decodes(png, size, rgba8), "");

@@ -6,7 +6,7 @@
 #include "bench/metrics.h"
 #include "gpu_test.h"
 #include "io/image_io.h"
-#include "path_tracer.h"
+#include "path_traced_reference.h"
 #include "render/camera.h"
 #include "render/presets.h"
 #include "render/renderer.h"
@@ -92,18 +92,6 @@ RenderSettings directSettings(uint32_t size) {
     settings.image.supersample = 1;  // one sample at the pixel centre, where the expected value is computed
     settings.shading.mode = RenderMode::Direct;
     return settings;
-}
-
-// The path tracer's direct light of `scene` from its first camera, size × size at 256 samples a pixel.
-Image pathTracedDirectLight(const Scene& scene, uint32_t size) {
-    pt::PathTracer tracer = pt::createPathTracer(scene);
-    pt::RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.samplesPerPixel = 256;
-    settings.component = pt::Component::Direct;
-    settings.threads = 1;
-    settings.camera = scene.cameras.front();
-    return pt::render(tracer, settings).image;
 }
 
 glm::vec3 pixelRay(const Camera& camera, uint32_t x, uint32_t y, uint32_t size) {

@@ -4,7 +4,7 @@
 #include "../cpu/gltf_test_helpers.h"
 #include "bench/metrics.h"
 #include "gpu_test.h"
-#include "path_tracer.h"
+#include "path_traced_reference.h"
 #include "render/renderer.h"
 #include "scene/default_light.h"
 #include "scene/load.h"
@@ -275,14 +275,7 @@ TEST_F(MaterialTextures, ATexturedQuadsDirectLightMatchesThePathTracer) {
     renderer.renderFrame();
     const Image image = renderer.readImage();
 
-    pt::PathTracer tracer = pt::createPathTracer(scene);
-    pt::RenderSettings reference;
-    reference.width = reference.height = kSize;
-    reference.samplesPerPixel = 256;
-    reference.component = pt::Component::Direct;
-    reference.threads = 1;
-    reference.camera = scene.cameras.front();
-    const Image truth = pt::render(tracer, reference).image;
+    const Image truth = pathTracedDirectLight(scene, kSize);
     const bench::ImageError error = bench::compareImages(image, truth);
     std::printf("[ textures ] direct light against the path tracer: luminance %.4f of it, relMSE %.4f\n",
                 error.luminanceRatio, error.relMse);
