@@ -29,6 +29,12 @@ layout(set = 0, binding = 2, rgba16f) uniform readonly image3D sceneNormal;
 // Whether the finer level is the grid's level 0 (`finer` is then that level, the same for both
 // directions): a pipeline each, since lavapipe reads the normals under a branch that skips them anyway.
 layout(constant_id = 0) const bool FINER_IS_SCENE_LEVEL = false;
+// Where cones leave surfaces (voxel_volumes.h): bit 0 along +axis, bit 1 along −axis; the finer
+// level's flags (not read when the finer level is the scene's) and this level's.
+layout(set = 0, binding = 3, r32ui) uniform readonly uimage3D finerLeaving;
+layout(set = 0, binding = 4, r32ui) uniform writeonly uimage3D coarserLeaving;
+const uint LEAVING_POSITIVE = 1u;
+const uint LEAVING_NEGATIVE = 2u;
 layout(push_constant) uniform Push {
     uint axis;  // 0, 1, 2 = x, y, z
 };
@@ -42,13 +48,15 @@ const float OPAQUE = 0.99f;
 
 struct Seen {
     vec4 positive, negative;  // a child as rays along +axis and −axis see it
+    uint leaving;             // LEAVING_* where it holds a surface that cones leave along ±axis
 };
 
 // Where the −axis chain starts along z in the finer and the coarser image.
 ivec3 finerNegativeStart, coarserNegativeStart;
 
 Seen seenFromBothSides(ivec3 voxel) {
-    Seen seen = Seen(imageLoad(finer, voxel), imageLoad(finer, voxel + finerNegativeStart));
+    Seen seen = Seen(imageLoad(finer, voxel), imageLoad(finer, voxel + finerNegativeStart), 0u);
+    if (!FINER_IS_SCENE_LEVEL) seen.leaving = imageLoad(finerLeaving, voxel).r;
     if (FINER_IS_SCENE_LEVEL) {
         vec3 normal = imageLoad(sceneNormal, voxel).xyz;
         float normalLength = length(normal);
@@ -57,6 +65,9 @@ Seen seenFromBothSides(ivec3 voxel) {
         float facing = normal[axis];
         if (sided && !(facing < -FRONT_FACING * normalLength)) seen.positive = vec4(0.0f);
         if (sided && !(-facing < -FRONT_FACING * normalLength)) seen.negative = vec4(0.0f);
+        // Its front faces +axis: cones leave it along +axis (and rays along +axis see it from behind).
+        if (sided && facing > -FRONT_FACING * normalLength) seen.leaving = LEAVING_POSITIVE;
+        if (sided && -facing > -FRONT_FACING * normalLength) seen.leaving = LEAVING_NEGATIVE;
     }
     return seen;
 }
@@ -64,7 +75,7 @@ Seen seenFromBothSides(ivec3 voxel) {
 // The texel's values for rays along +axis and −axis: each pair of children along the axis
 // composited front to back (premultiplied "over"), the four pairs averaged.
 Seen composite(ivec3 texel, ivec3 along) {
-    Seen sum = Seen(vec4(0.0f), vec4(0.0f));
+    Seen sum = Seen(vec4(0.0f), vec4(0.0f), 0u);
     for (int a = 0; a < 2; ++a) {
         for (int b = 0; b < 2; ++b) {
             ivec3 across = ivec3(0);
@@ -75,6 +86,7 @@ Seen composite(ivec3 texel, ivec3 along) {
             Seen high = seenFromBothSides(first + along);
             sum.positive += low.positive + (1.0f - low.positive.a) * high.positive;
             sum.negative += high.negative + (1.0f - high.negative.a) * low.negative;
+            sum.leaving |= low.leaving | high.leaving;
         }
     }
     sum.positive *= 0.25f;
@@ -86,8 +98,13 @@ Seen composite(ivec3 texel, ivec3 along) {
 // Otherwise trilinear filtering blends a wall's texel with the empty one behind it, no sample of a
 // wide cone sees the wall's full opacity, and a cone that reaches a wall goes on through it (a
 // closed emitting box gave 0.68-0.84 of its radiance, by step size).
-vec4 behindOpaque(vec4 value, vec4 front) {
-    return front.a >= OPAQUE ? value + (1.0f - value.a) * front : value;
+// Except where cones leave a surface along the ray (`leaving`, in either texel): a cone starting
+// on a surface has not come through what lies behind it. Carried across the floor of a room built
+// on a slab, the slab's opacity stood in front of the floor, a texel further at every level, and
+// the floor's cones met it (a black floor over a dark slab in an emitting box gathered 0.76 of its
+// light, 0.93 over an emitting one whose light it saw instead of the walls').
+vec4 behindOpaque(vec4 value, vec4 front, bool leaving) {
+    return front.a >= OPAQUE && !leaving ? value + (1.0f - value.a) * front : value;
 }
 
 void main() {
@@ -108,10 +125,15 @@ void main() {
     // value of a texel is written one step later, once the next composite is known.
     Seen last = composite(texel, along);
     imageStore(coarser, texel, last.positive);
+    imageStore(coarserLeaving, texel, uvec4(last.leaving));
     for (int i = 1; i < size[axis]; ++i) {
         Seen current = composite(texel + along * i, along);
-        imageStore(coarser, texel + along * i, behindOpaque(current.positive, last.positive));
-        imageStore(coarser, coarserNegativeStart + texel + along * (i - 1), behindOpaque(last.negative, current.negative));
+        uint leaving = last.leaving | current.leaving;
+        imageStore(coarser, texel + along * i,
+                   behindOpaque(current.positive, last.positive, (leaving & LEAVING_POSITIVE) != 0u));
+        imageStore(coarser, coarserNegativeStart + texel + along * (i - 1),
+                   behindOpaque(last.negative, current.negative, (leaving & LEAVING_NEGATIVE) != 0u));
+        imageStore(coarserLeaving, texel + along * i, uvec4(current.leaving));
         last = current;
     }
     imageStore(coarser, coarserNegativeStart + texel + along * (size[axis] - 1), last.negative);

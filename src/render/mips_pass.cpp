@@ -34,10 +34,15 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
         for (uint32_t axis = 0; axis < 3; ++axis) {
             // The first directional level is built from the shared finest level.
             const GpuImage& chains = directional[axis];
+            const GpuImage& leaving = volumes.leavingSurfaces[axis];
+            // The first level takes its surfaces from the scene's normals; its finer flags are
+            // bound but not read.
             DescriptorPush()
                 .storageImage(0, level == 0 ? mipView(volume, 0) : mipView(chains, level - 1))
                 .storageImage(1, mipView(chains, level))
                 .storageImage(2, volumes.normal.view)
+                .storageImage(3, mipView(leaving, level == 0 ? 0 : level - 1))
+                .storageImage(4, mipView(leaving, level))
                 .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.layout);
             vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(axis), &axis);
             // One invocation per line of texels along the axis.

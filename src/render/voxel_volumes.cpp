@@ -20,6 +20,10 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
     if (resources.anisotropicVoxels)
         for (const char* name : {"voxel radiance +x and -x", "voxel radiance +y and -y", "voxel radiance +z and -z"})
             descs.push_back({name, half, 8, side / 2, mips - 1, glsl::DIRECTIONAL_DEPTH_SIDES, false});
+    if (resources.anisotropicVoxels)
+        for (const char* name : {"surfaces leaving along +x and -x", "surfaces leaving along +y and -y",
+                                 "surfaces leaving along +z and -z"})
+            descs.push_back({name, VK_FORMAT_R32_UINT, 4, side / 2, mips - 1, 1, false});
     if (resources.bounces != 1) descs.push_back({"voxel gathered light", half, 8, side, 1, 1, false});
     return descs;
 }
@@ -62,6 +66,8 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     for (GpuImage* image : {&albedoOpacity, &normal, &emission, &radiance}) *image = makeVolume(context, descs[next++]);
     if (resources.anisotropicVoxels)
         for (int axis = 0; axis < 3; ++axis) directional.push_back(makeVolume(context, descs[next++]));
+    if (resources.anisotropicVoxels)
+        for (int axis = 0; axis < 3; ++axis) leavingSurfaces.push_back(makeVolume(context, descs[next++]));
     if (resources.bounces != 1) gatheredLight = makeVolume(context, descs[next++]);
     occupiedVoxels = Buffer(context, occupiedListBytes(resolution),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
@@ -107,6 +113,7 @@ std::vector<VkImageView> VoxelVolumes::lightLevelZeroViews() const {
 std::vector<const GpuImage*> VoxelVolumes::images() const {
     std::vector<const GpuImage*> all = {&albedoOpacity, &normal, &emission, &radiance};
     for (const GpuImage& chain : directional) all.push_back(&chain);
+    for (const GpuImage& flags : leavingSurfaces) all.push_back(&flags);
     if (gatheredLight.image != VK_NULL_HANDLE) all.push_back(&gatheredLight);
     return all;
 }

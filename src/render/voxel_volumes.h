@@ -45,6 +45,11 @@ struct VoxelVolumes {
     // A cone then reads its three chains with three fetches: with an image per direction, lavapipe
     // fetched from both of an axis's images and kept one (a converged bounce 294 -> 199 ms, README).
     std::vector<GpuImage> directional;
+    // R32_UINT, one per axis and level of the directional chains: bit 0 where a texel holds a
+    // surface that cones leave along +axis (its front faces +axis, so rays along +axis see it from
+    // behind), bit 1 the same for −axis. The chains' "opaque hides what lies behind it" stops
+    // there (mips_anisotropic.comp).
+    std::vector<GpuImage> leavingSurfaces;
     // RGBA16F (bounces ≠ 1): the light each voxel reflects of what its cones last gathered, scaled
     // as the radiance; the injection adds it for the next bounce.
     GpuImage gatheredLight;

@@ -220,6 +220,26 @@ protected:
             probes.push_back({glm::vec4(16, 16, 16, 1), glm::vec4(normal, 0)});
         return trace(probes);
     }
+    // A black floor facing up (one-sided voxels, as the voxelizer writes a surface) in the box, lying on
+    // the box's bottom wall as a room's floor lies on its slab: `slab` is that wall's radiance. The
+    // cones start 1.5 voxels above the floor, as the renderer starts them (coneStartOffset at 64³);
+    // the floor's surface runs through its voxels' centres (y = 4.5).
+    std::vector<glm::vec4> gatherOnABlackFloor(glm::vec3 slab) {
+        buildEnclosure();
+        for (int z = 2; z < 30; ++z)
+            for (int x = 2; x < 30; ++x)
+                for (int y = 2; y < 4; ++y) voxel(x, y, z) = glm::vec4(slab, 1.0f);
+        for (int z = 4; z < 28; ++z)
+            for (int x = 4; x < 28; ++x) {
+                voxel(x, 4, z) = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+                normalAt(x, 4, z) = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+            }
+        buildVolume();
+        std::vector<Probe> probes;
+        for (glm::vec2 at : {glm::vec2(16, 16), glm::vec2(8, 20), glm::vec2(22, 9)})
+            probes.push_back({glm::vec4(at.x, 6.0f, at.y, 2), glm::vec4(0, 1, 0, 1.5f)});
+        return trace(probes);
+    }
 };
 
 TEST_F(EmittingEnclosure, AnisotropicVoxelsGatherTheRadianceAtEveryStepSize) {
@@ -240,29 +260,29 @@ TEST_F(EmittingEnclosure, AnisotropicVoxelsGatherTheRadianceAtEveryStepSize) {
 }
 
 TEST_F(EmittingEnclosure, ABlackFloorGathersTheWallsLightNotItsOwnVoxels) {
-    // The floor of the box is black and faces up (one-sided voxels, as the voxelizer writes a
-    // surface): a point on it must see the emitting walls and ceiling, not be blocked by the
-    // floor's own voxels (self-occlusion). Measured 0.93-0.94 L (0.83-0.86 before opaque texels
-    // hid what lies behind them and the chains combined as optical depths): the cones 30-40° off
-    // the normal still lose 5-9 % where they meet the walls near the floor. The target is
-    // 0.95 L; this bound keeps what was reached.
-    buildEnclosure();
-    for (int z = 4; z < 28; ++z)
-        for (int x = 4; x < 28; ++x) {
-            voxel(x, 4, z) = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-            normalAt(x, 4, z) = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
-        }
-    buildVolume();
-    std::vector<Probe> probes;
-    // The floor's surface runs through its voxels' centres (y = 4.5); the cones start 1.5 voxels
-    // above it, as the renderer starts them (coneStartOffset at 64³).
-    for (glm::vec2 at : {glm::vec2(16, 16), glm::vec2(8, 20), glm::vec2(22, 9)})
-        probes.push_back({glm::vec4(at.x, 6.0f, at.y, 2), glm::vec4(0, 1, 0, 1.5f)});
-    for (const glm::vec4& result : trace(probes))
+    // A point on the floor must see the emitting walls and ceiling, blocked neither by the floor's
+    // own voxels (self-occlusion) nor by the dark slab under it. Measured 0.944 / 0.963 / 0.989 L.
+    // Until the directional chains stopped carrying opacity across a surface that cones leave
+    // (mips_anisotropic.comp), the slab's opacity stood in front of the floor and this gathered
+    // 0.76 L; the test then passed at 0.93 only because the slab emitted L and the floor saw it.
+    // The target is 0.95 L: the cones 30-40° off the normal still lose a few percent where
+    // they meet the walls near the floor.
+    for (const glm::vec4& result : gatherOnABlackFloor(glm::vec3(0.0f)))
         for (int c = 0; c < 3; ++c) {
-            EXPECT_GE(result[c], 0.92f * radiance[c]);
+            EXPECT_GE(result[c], 0.94f * radiance[c]);
             EXPECT_LE(result[c], 1.0f * radiance[c]);
         }
+}
+
+TEST_F(EmittingEnclosure, AFloorsConesDoNotSeeWhatLiesBehindIt) {
+    // The same floor on a slab that emits like the walls: nothing of the slab may reach the cones.
+    const std::vector<glm::vec4> overDark = gatherOnABlackFloor(glm::vec3(0.0f));
+    voxels.assign(voxels.size(), glm::vec4(0.0f));
+    normals.assign(normals.size(), glm::vec4(0.0f));
+    const std::vector<glm::vec4> overBright = gatherOnABlackFloor(radiance);
+    ASSERT_EQ(overDark.size(), overBright.size());
+    for (size_t i = 0; i < overDark.size(); ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(overBright[i][c], overDark[i][c], 0.01f * radiance[c]) << "probe " << i;
 }
 
 TEST_F(EmittingEnclosure, IsotropicVoxelsLetWideConesSeeThroughThinWalls) {
