@@ -10,6 +10,21 @@
 #include "sky.glsl"
 #include "voxel_grid.h"
 
+// Inside the grid a sample keeps the filter off the transparent border: within half a texel of a
+// face (of the coarser of the levels it blends) it reads the face's texels whole. A wall lying in
+// the grid's outermost texels (a room's walls, by the grid's 1/64 margin) has no texel beyond it
+// to make opaque, so the border's zeros blended into it: a 40° cone from the middle of a closed
+// emitting box gathered 0.93 of its radiance on average, down to 0.89, a 60° one 0.96. A sample
+// outside the grid still reads the border: clamped too, it would stretch the texels of the grid's
+// faces outwards, and the Cornell box's open front, closed by its walls' stretched edges, read
+// 1.45x its indirect light.
+vec3 clearOfTheBorder(vec3 uvw, float lod) {
+    float coarserTexels = max(float(frame.grid.resolution.x) / exp2(floor(lod) + 1.0f), 1.0f);
+    vec3 inset = vec3(0.5f / coarserTexels);
+    bool inside = all(greaterThanEqual(uvw, vec3(0.0f))) && all(lessThanEqual(uvw, vec3(1.0f)));
+    return inside ? clamp(uvw, inset, 1.0f - inset) : uvw;
+}
+
 // The volume seen by a cone travelling along `direction`: isotropic, or (anisotropic voxels) the
 // three directional chains facing the direction. Their opacities combine as optical depths
 // weighted by the direction's squared components, 1 − α = Π (1 − αᵢ)^wᵢ, so a wall that is opaque
@@ -19,6 +34,7 @@
 // `blendFinest`: below level 1 the sample blends towards the finest level; a literal at each call
 // (traceCone), so that a march past level 1 does not fetch that level at all.
 vec4 sampleVoxels(vec3 uvw, float lod, vec3 direction, bool blendFinest) {
+    uvw = clearOfTheBorder(uvw, lod);
     if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
     float directionalLod = max(lod - 1.0f, 0.0f);
     vec3 weight = direction * direction;
