@@ -20,9 +20,9 @@ namespace {
 //   the dark room 0.4 / 0.6 / 2.6 % (but the lit room then loses a third of its light through it),
 //   two faces 1 cm apart 5.9 / 10.7 / 11.3 % (8.8 % on the voxel boundary until the directional
 //   chains stopped carrying opacity across a surface the cones leave). Walls thinner than the
-//   coarse texels the cones read leak through their trilinear filtering, and a sheet's voxels are see-through from behind. Until
-//   the two rooms' quads were wound to face their normals, this measured 0.1-1.3 %: the wall then
-//   faced the dark room and the floor faced down, out of the rooms.
+//   coarse texels the cones read leak through their trilinear filtering, and a sheet's voxels are
+//   see-through from behind. Until the two rooms' quads were wound to face their normals, this
+//   measured 0.1-1.3 %: the wall then faced the dark room and the floor faced down, out of the rooms.
 // - brightness against resolution (Cornell box, first bounce, 32² × 2², anisotropic): 0.98, 0.92,
 //   0.95, 0.92 × its one-bounce path-traced truth at 32³, 64³, 128³, 256³ (spread 6.6 %; 0.95, 0.92,
 //   0.92, 0.90 before cone samples inside the grid stopped blending its faces with the empty border,
