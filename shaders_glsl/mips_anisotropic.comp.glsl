@@ -6,9 +6,12 @@
 // would make it 1/size opaque and let wide cones see through thin walls.
 //
 // The first level (built from the grid's level 0) is one-sided: a surface voxel is opaque, and
-// shows its light, only to rays that meet its front. Seen from behind or edge on it is empty, so a
-// cone leaving a surface neither stops in that surface's own voxels (self-occlusion) nor gathers
-// their light (self-illumination), and a lone lit plane gets no indirect light from itself.
+// shows its light, only to rays that meet its front or run along it. Seen from behind it is empty,
+// so a cone leaving a surface neither stops in that surface's own voxels (self-occlusion) nor
+// gathers their light (self-illumination), and a lone lit plane gets no indirect light from
+// itself. Edge on it stays opaque: a cone crossing a wall obliquely reads the chains of the axes
+// along the wall too, and with the wall empty there (tried) it saw through, and the closed rooms
+// kept 0.69 of their indirect light.
 // Voxels whose triangles disagree (the two faces of a thin wall, small features) have a short mean
 // normal and stay opaque both ways.
 //
@@ -41,7 +44,7 @@ layout(push_constant) uniform Push {
 
 // A mean normal shorter than this (two faces of a thin wall cancel) has no side.
 const float MIN_SIDED_NORMAL = 0.25f;
-// Front facing: the ray meets the surface at more than ~6° from edge on.
+// Seen from behind: the ray meets the surface's back at more than ~6° from edge on.
 const float FRONT_FACING = -0.1f;
 // A texel this opaque hides what lies behind it.
 const float OPAQUE = 0.99f;
