@@ -170,14 +170,12 @@ int runBench(const std::vector<std::string>& rawArguments) {
         progress.setStage(sceneStage + ", " + std::to_string(measured) + " of " + std::to_string(total) + " measured");
     };
     std::vector<bench::Measurement> measurements;
-    std::optional<bench::References> cornellReferences;
     for (size_t i = 0; i < scenes.size(); ++i) {
         const std::string& name = scenes[i];
         const Scene& scene = loadedScenes[i];
         const std::optional<bench::References> references = bench::loadReferences(
             referenceDir, sceneFileName(name), imageSettings.image.width, imageSettings.image.height);
         if (references) info.references[scene.name] = *references;
-        if (references && name == "cornell") cornellReferences = references;
         if (!references)
             progress.hideWhile([&] {
                 std::printf("  %s: no %ux%u reference in %s, so no error is reported\n", name.c_str(),
@@ -212,10 +210,13 @@ int runBench(const std::vector<std::string>& rawArguments) {
         settings.image.width = imageSettings.image.width;
         settings.image.height = imageSettings.image.height;
         progress.setStage("the failure modes");
-        const bench::FailureModeReport report = bench::measureFailureModes(
-            context, settings,
-            cornellReferences && cornellReferences->indirectOneBounce ? &*cornellReferences->indirectOneBounce
-                                                                      : nullptr);
+        std::vector<bench::OneBounceTruth> truths;
+        for (const Scene& scene : loadedScenes) {
+            const auto references = info.references.find(scene.name);
+            if (references != info.references.end() && references->second.indirectOneBounce)
+                truths.push_back({&scene, &*references->second.indirectOneBounce});
+        }
+        const bench::FailureModeReport report = bench::measureFailureModes(context, settings, truths);
         outputs.emplace_back(outDir + "/failure_modes.json", bench::failureModesJson(report));
         progress.hideWhile([&] { std::printf("\n%s", bench::failureModesText(report).c_str()); });
         for (const bench::ResolutionLuminance& r : report.drift)

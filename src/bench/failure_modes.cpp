@@ -175,6 +175,16 @@ std::vector<ResolutionLuminance> measureResolutionDrift(GpuContext& context, con
     return results;
 }
 
+FirstBounce measureFirstBounce(GpuContext& context, const Scene& scene, RenderSettings settings,
+                               const Image& oneBounceReference) {
+    settings.shading.mode = RenderMode::Indirect;
+    settings.resources.bounces = 1;
+    Renderer renderer(context, scene, settings);
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    return {compareImages(image, oneBounceReference), allFiniteAndNonNegative(image)};
+}
+
 FlickerMeasurement measureFlicker(GpuContext& context, const Scene& scene, const RenderSettings& settings,
                                   float cameraStep, float lightStep) {
     Renderer renderer(context, scene, settings);

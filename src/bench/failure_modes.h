@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bench/metrics.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "render/settings.h"
@@ -69,6 +70,17 @@ struct ResolutionLuminance {
 std::vector<ResolutionLuminance> measureResolutionDrift(GpuContext& context, const Scene& scene,
                                                         RenderSettings settings,
                                                         const std::vector<uint32_t>& resolutions);
+
+// ---- The first bounce against its own truth: one bounce of indirect light with the caller's
+// settings, against the path tracer's paths cut after one bounce (SCENE-indirect-1bounce.pfm, the
+// image's size). Every later bounce is fed by the first and repeats its error, and the converged
+// light's error against the all-bounce truth can hide two errors that cancel.
+struct FirstBounce {
+    ImageError error;
+    bool finite = false;
+};
+FirstBounce measureFirstBounce(GpuContext& context, const Scene& scene, RenderSettings settings,
+                               const Image& oneBounceReference);
 
 // ---- Flicker: the relative L1 change of the image when the camera or the first light moves by a
 // small step (metres, along x), against the image before. A step of zero must change nothing.

@@ -32,7 +32,7 @@ double spread(const std::vector<ResolutionLuminance>& drift) {
 }  // namespace
 
 FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings& settings,
-                                      const Image* cornellOneBounceReference) {
+                                      const std::vector<OneBounceTruth>& truths) {
     FailureModeReport report;
     report.setting = settingLabel(settings);
 
@@ -52,11 +52,15 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     RenderSettings firstBounce = indirect;
     firstBounce.resources.bounces = 1;
     report.drift = measureResolutionDrift(context, cornell, firstBounce, {32, 64, 128, 256});
-    if (cornellOneBounceReference) report.driftReference = meanLuminance(*cornellOneBounceReference);
+    for (const OneBounceTruth& truth : truths)
+        if (truth.scene->name == "cornell") report.driftReference = meanLuminance(*truth.reference);
 
     report.selfIllumination = measureSelfIllumination(context, settings);
     report.flickerFull = measureFlicker(context, cornell, settings, 0.001f, 0.001f);
     report.flickerIndirect = measureFlicker(context, cornell, indirect, 0.001f, 0.001f);
+    for (const OneBounceTruth& truth : truths)
+        report.firstBounces.push_back(
+            {truth.scene->name, measureFirstBounce(context, *truth.scene, settings, *truth.reference)});
     return report;
 }
 
@@ -81,6 +85,10 @@ std::string failureModesText(const FailureModeReport& report) {
         "light %.4f\n",
         report.flickerFull.cameraChange, report.flickerFull.lightChange, report.flickerIndirect.cameraChange,
         report.flickerIndirect.lightChange);
+    for (const FailureModeReport::SceneFirstBounce& scene : report.firstBounces)
+        text += format("  first bounce, %s: %.3f × its path-traced one bounce, relMSE %.4f%s\n", scene.scene.c_str(),
+                       scene.firstBounce.error.luminanceRatio, scene.firstBounce.error.relMse,
+                       scene.firstBounce.finite ? "" : "  NON-FINITE PIXELS");
     return text;
 }
 
@@ -113,7 +121,16 @@ std::string failureModesJson(const FailureModeReport& report) {
         "\n  \"flicker\": {\"step_m\": 0.001, \"full\": {\"camera\": " + jsonNumber(report.flickerFull.cameraChange) +
         ", \"light\": " + jsonNumber(report.flickerFull.lightChange) +
         "}, \"indirect\": {\"camera\": " + jsonNumber(report.flickerIndirect.cameraChange) +
-        ", \"light\": " + jsonNumber(report.flickerIndirect.lightChange) + "}}\n}\n";
+        ", \"light\": " + jsonNumber(report.flickerIndirect.lightChange) + "}},";
+    json += "\n  \"first_bounce\": [";
+    for (size_t i = 0; i < report.firstBounces.size(); ++i) {
+        const FailureModeReport::SceneFirstBounce& scene = report.firstBounces[i];
+        json += std::string(i ? "," : "") + "\n    {\"scene\": " + jsonString(scene.scene) +
+                ", \"luminance_ratio\": " + jsonNumber(scene.firstBounce.error.luminanceRatio) +
+                ", \"relmse\": " + jsonNumber(scene.firstBounce.error.relMse) +
+                ", \"finite\": " + (scene.firstBounce.finite ? "true" : "false") + "}";
+    }
+    json += "\n  ]\n}\n";
     return json;
 }
 

@@ -1,5 +1,6 @@
 // The failure-modes section of `vct bench`: light leaking through a thin wall, brightness against
-// voxel resolution, self-illumination and flicker (src/bench/failure_modes.h), measured with one setting and reported
+// voxel resolution, self-illumination, flicker and each scene's first bounce against its own truth
+// (src/bench/failure_modes.h), measured with one setting and reported
 // as text and JSON next to the accuracy matrix. The tests hold the same measurements to bounds
 // (tests/gpu/failure_modes_test.cpp); the benchmark reports them at the bench's image size.
 #pragma once
@@ -24,13 +25,24 @@ struct FailureModeReport {
     double driftReference = -1.0;                     // the path tracer's one-bounce mean luminance; −1 = none
     FlickerMeasurement flickerFull, flickerIndirect;  // 1 mm camera and light steps, Cornell box
     SelfIllumination selfIllumination;                // a lone sunlit plane, ground truth 0
+    struct SceneFirstBounce {
+        std::string scene;
+        FirstBounce firstBounce;
+    };
+    std::vector<SceneFirstBounce> firstBounces;  // the scenes that have a one-bounce reference
+};
+
+// A benchmarked scene and its path tracer's paths cut after one bounce, at the bench's image size.
+struct OneBounceTruth {
+    const Scene* scene = nullptr;
+    const Image* reference = nullptr;
 };
 
 // `settings` gives the image size and the cone setup; the drift runs its first bounce at
-// 32³…256³. With the Cornell box's one-bounce reference (same image size) the drift is also
-// compared with it.
+// 32³…256³. Each of `truths` has its first bounce measured against its reference, and the Cornell
+// box's (a scene named "cornell" among them) is what the drift is also compared with.
 FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings& settings,
-                                      const Image* cornellOneBounceReference);
+                                      const std::vector<OneBounceTruth>& truths);
 
 std::string failureModesText(const FailureModeReport& report);
 std::string failureModesJson(const FailureModeReport& report);

@@ -1,7 +1,9 @@
 # Runs `vct bench --preset fast` on a tiny image and checks failure_modes.json: nine leak
-# measurements (three walls at three places in their voxel), the Cornell box's first bounce at 32³…256³ voxels, a lone plane's self-illumination
-# and the flicker figures, all
-# finite numbers (the JSON writes non-finite numbers as null), every image finite.
+# measurements (three walls at three places in their voxel), the Cornell box's first bounce at
+# 32³…256³ voxels, a lone plane's self-illumination and the flicker figures, all finite numbers
+# (the JSON writes non-finite numbers as null), every image finite; and the list of first bounces
+# against their references, empty here (the references are 128²; tests/gpu/failure_modes_test.cpp
+# measures one).
 #   cmake -DVCT=path/to/vct -DOUT_DIR=dir -P check_bench_failure_modes.cmake
 cmake_minimum_required(VERSION 3.22)
 file(REMOVE_RECURSE ${OUT_DIR})
@@ -53,4 +55,8 @@ foreach(mode full indirect)
     expect_number(flicker ${mode} ${move})
   endforeach()
 endforeach()
+string(JSON first_bounces ERROR_VARIABLE json_error LENGTH "${json}" first_bounce)
+if(json_error OR NOT first_bounces EQUAL 0)
+  message(FATAL_ERROR "failure_modes.json: first_bounce should be an empty list at 32² (${first_bounces}${json_error})")
+endif()
 message(STATUS "vct bench: failure modes measured and finite")
