@@ -128,8 +128,8 @@ TEST_F(FailureModes, TheFirstBounceIsMeasuredAgainstItsOwnTruth) {
         const Scene scene = loadScene(bound.scene);
         RenderSettings settings = *findRenderPreset("balanced");
         settings.image.width = settings.image.height = 128;
-        const Image truth = readPfm(std::string(VCT_SOURCE_DIR) + "/assets/reference/" + bound.scene +
-                                    "-indirect-1bounce.pfm");
+        const Image truth =
+            readPfm(std::string(VCT_SOURCE_DIR) + "/assets/reference/" + bound.scene + "-indirect-1bounce.pfm");
         const bench::FirstBounce first = bench::measureFirstBounce(gpu(), scene, settings, truth);
         std::printf("[ first bounce ] %s: %.3f × its truth, relMSE %.4f\n", bound.scene, first.error.luminanceRatio,
                     first.error.relMse);
