@@ -52,15 +52,15 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     RenderSettings firstBounce = indirect;
     firstBounce.resources.bounces = 1;
     report.drift = measureResolutionDrift(context, cornell, firstBounce, {32, 64, 128, 256});
-    for (const OneBounceTruth& truth : truths)
-        if (truth.scene->name == "cornell") report.driftReference = meanLuminance(*truth.reference);
 
     report.selfIllumination = measureSelfIllumination(context, settings);
     report.flickerFull = measureFlicker(context, cornell, settings, 0.001f, 0.001f);
     report.flickerIndirect = measureFlicker(context, cornell, indirect, 0.001f, 0.001f);
-    for (const OneBounceTruth& truth : truths)
+    for (const OneBounceTruth& truth : truths) {
         report.firstBounces.push_back(
             {truth.scene->name, measureFirstBounce(context, *truth.scene, settings, *truth.reference)});
+        if (truth.scene->name == "cornell") report.driftReference = meanLuminance(*truth.reference);
+    }
     return report;
 }
 
