@@ -1,7 +1,8 @@
 #version 460
 // Conservative voxelization: one workgroup per (triangle, tile) work item, one invocation per voxel
 // of the tile (see voxelize.h for the work split and the fixed-point sums). Every voxel the closed
-// triangle touches gets the triangle's attributes added to the integer accumulation buffers.
+// triangle touches, set back along its normal (voxelizationSetback), gets the triangle's attributes
+// added to the integer accumulation buffers.
 // Base colour and emission are the material's factors times its textures averaged over the voxel's
 // footprint (textureOverVoxel), so the light the voxels bounce has the colour of the surface there,
 // not of a white baseColorFactor. A material emits into the voxels where its voxelEmission (the
@@ -197,12 +198,15 @@ void main() {
     // Only after the texture reads may the invocations of a workgroup part: lavapipe takes an explicit
     // level of detail from one invocation of a SIMD group, which must have computed it (voxels read
     // the wrong level where a neighbour had left early).
-    if (any(greaterThanEqual(voxel, uvec3(resolution))) || !triangleTouchesBox(a, b, c, vec3(voxel) + 0.5f, 0.5f) ||
-        !(coverage > 0.0f))
+    // The voxels it marks are those its set-back copy touches (voxelizationSetback); its plane,
+    // for where the surface lies in them, is its own.
+    vec3 normal = unitNormal(a, b, c);
+    vec3 setback = -voxelizationSetback(normal) * normal;
+    if (any(greaterThanEqual(voxel, uvec3(resolution))) ||
+        !triangleTouchesBox(a + setback, b + setback, c + setback, vec3(voxel) + 0.5f, 0.5f) || !(coverage > 0.0f))
         return;
     albedo = clamp(albedo, 0.0f, 1.0f);
     emission = clamp(emission * params.emission.x, 0.0f, EMISSION_FIXED_MAX);
-    vec3 normal = unitNormal(a, b, c);
     // The same whichever way the normal points: the two faces of a thin wall agree on it.
     vec3 toPlane = normal * dot(normal, a - (vec3(voxel) + 0.5f));
     uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);

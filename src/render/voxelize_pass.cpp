@@ -148,7 +148,8 @@ std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::ve
     std::vector<glm::uvec2> items;
     for (uint32_t position = 0; position < order.size(); ++position) {
         if (isDegenerateTriangle(scene, order[position])) continue;
-        const TriangleD triangle = gridTriangle(scene, grid, order[position]);
+        // The tiles that the set-back copy the GPU marks voxels of may reach (voxelize.comp).
+        const TriangleD triangle = setBackTriangle(gridTriangle(scene, grid, order[position]));
         const VoxelRange range = triangleVoxelRange(triangle, resolution, kTileSlack);
         if (range.empty()) continue;
         const glm::ivec3 firstTile = range.first / tile, lastTile = range.last / tile;

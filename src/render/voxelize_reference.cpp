@@ -20,6 +20,12 @@ TriangleD gridTriangle(const Scene& scene, const glsl::VoxelGridParams& grid, si
     return result;
 }
 
+TriangleD setBackTriangle(const TriangleD& triangle) {
+    const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+    const glm::dvec3 setback = -double(glsl::voxelizationSetback(glm::vec3(normal))) * normal;
+    return {triangle[0] + setback, triangle[1] + setback, triangle[2] + setback};
+}
+
 bool isDegenerateTriangle(const Scene& scene, size_t triangle) {
     const glm::dvec3 p0(scene.vertices[scene.indices[triangle * 3 + 0]].position);
     const glm::dvec3 p1(scene.vertices[scene.indices[triangle * 3 + 1]].position);
@@ -99,12 +105,14 @@ VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams
         // A material emits where its emissive texture's mean is not black, with its factor.
         const glm::dvec3 emission =
             emitsLight(scene, material) ? glm::max(glm::dvec3(material.emission), 0.0) : glm::dvec3(0.0);
+        // Marked where its set-back copy touches; its own plane says where the surface lies.
+        const TriangleD marking = setBackTriangle(triangle);
         // One voxel of slack so voxels just outside the range also get their decision margin.
-        const VoxelRange range = triangleVoxelRange(triangle, n, 1.0);
+        const VoxelRange range = triangleVoxelRange(marking, n, 1.0);
         for (int z = range.first.z; z <= range.last.z; ++z)
             for (int y = range.first.y; y <= range.last.y; ++y)
                 for (int x = range.first.x; x <= range.last.x; ++x) {
-                    const double separation = triangleBoxSeparation(triangle, glm::dvec3(x, y, z) + 0.5, 0.5);
+                    const double separation = triangleBoxSeparation(marking, glm::dvec3(x, y, z) + 0.5, 0.5);
                     const size_t i = result.index(uint32_t(x), uint32_t(y), uint32_t(z));
                     result.decisionMargin[i] = std::min(result.decisionMargin[i], std::abs(separation));
                     if (separation > 0.0) continue;

@@ -1,5 +1,6 @@
 // The CPU twin of the voxelize pass, in double precision: the specification the GPU is tested against.
-// The same conservative separating-axis test (see shaders_glsl/triangle_box.glsl), the same
+// The same conservative separating-axis test (see shaders_glsl/triangle_box.glsl) of the same set-back
+// triangles (voxelizationSetback), the same
 // degenerate-triangle rule and the same attributes, averaged exactly instead of in fixed point.
 // Triangles of a material with voxelCoverage 0 touch nothing, as on the GPU. Colours are the
 // materials' factors: the GPU's textures are left out (it agrees where they are white, as an
@@ -24,6 +25,10 @@ glm::dvec3 toGridCoordinates(const glsl::VoxelGridParams& grid, const glm::vec3&
 
 // The triangle's three world positions, in grid coordinates.
 TriangleD gridTriangle(const Scene& scene, const glsl::VoxelGridParams& grid, size_t triangle);
+
+// The triangle moved back along its unit normal by voxelizationSetback (voxelize.h): the copy whose
+// touching voxels the voxelizer marks. Only for a triangle that is not degenerate.
+TriangleD setBackTriangle(const TriangleD& triangle);
 
 // Zero area: the edges' cross product is exactly zero. Decided on the float world positions in
 // double (where the products of float differences are exact), so the GPU's work items and the twin

@@ -115,16 +115,17 @@ TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTrac
 
 TEST_F(FailureModes, TheFirstBounceIsMeasuredAgainstItsOwnTruth) {
     // At `balanced` and the references' 128², one bounce against the path tracer's paths cut after
-    // one bounce. Measured (luminance ratio, relMSE): cornell 1.020 / 0.123, terrain 1.148 / 3.02.
+    // one bounce. Measured (luminance ratio, relMSE): cornell 1.023 / 0.123, terrain 1.001 / 2.17.
     // Cornell's 1.02 is two errors that cancel: its walls let a fifth of the cones out of the
     // room, and with walls that do not (optical depth filtered in the chains, or the border
-    // normalized) it reads 1.25 or 1.13. Terrain's is the ground under the white sphere, which
-    // gathers the sphere's and its own lit voxels at grazing angles: 4x its truth there.
+    // normalized) it reads 1.25 or 1.13. Terrain read 1.148 / 3.02 before oblique surfaces were
+    // voxelized set back (voxelizationSetback): its spheres' voxels stood proud of them, and the
+    // ground within a metre of them gathered 2-10x its truth, a bright band under the white one.
     struct Bound {
         const char* scene;
         double low, high, relMse;
     };
-    for (const Bound bound : {Bound{"cornell", 0.95, 1.10, 0.15}, Bound{"terrain", 1.0, 1.25, 3.5}}) {
+    for (const Bound bound : {Bound{"cornell", 0.95, 1.10, 0.15}, Bound{"terrain", 0.90, 1.10, 2.5}}) {
         const Scene scene = loadScene(bound.scene);
         RenderSettings settings = *findRenderPreset("balanced");
         settings.image.width = settings.image.height = 128;
