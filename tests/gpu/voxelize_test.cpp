@@ -231,6 +231,11 @@ void expectSampledPointsMarked(const Scene& scene, const glsl::VoxelGridParams& 
     EXPECT_EQ(missed, 0u) << "points of a triangle lie in voxels the GPU left empty";
 }
 
+// The opacity of voxel (x, y, z) of a 32³ grid.
+float opacityAt(const VoxelImages& gpu, int x, int y, int z) {
+    return gpu.albedoOpacity[size_t(x) + 32 * (size_t(y) + 32 * size_t(z))].a;
+}
+
 glm::vec3 randomUnitVector(std::mt19937& random) {
     std::normal_distribution<float> normal;
     return glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
@@ -281,15 +286,12 @@ TEST_F(Voxelize, TriangleOnVoxelFaceMarksTheVoxelsOnBothSides) {
     const Scene scene = makeScene({{glm::vec3(8, 2, 3), glm::vec3(8, 12, 3), glm::vec3(8, 2, 13)}});
     expectMatchesTwin(scene, exactGrid(32), 0.0);
     const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
-    const auto opacity = [&](int x, int y, int z) {
-        return gpu.albedoOpacity[size_t(x) + 32 * (size_t(y) + 32 * size_t(z))].a;
-    };
     for (int x : {7, 8}) {
-        EXPECT_EQ(opacity(x, 2, 3), 1.0f) << x;
-        EXPECT_EQ(opacity(x, 6, 6), 1.0f) << x;
-        EXPECT_EQ(opacity(x, 1, 2), 1.0f) << x << ": the corner (8, 2, 3) touches this voxel";
+        EXPECT_EQ(opacityAt(gpu, x, 2, 3), 1.0f) << x;
+        EXPECT_EQ(opacityAt(gpu, x, 6, 6), 1.0f) << x;
+        EXPECT_EQ(opacityAt(gpu, x, 1, 2), 1.0f) << x << ": the corner (8, 2, 3) touches this voxel";
     }
-    for (int x : {6, 9}) EXPECT_EQ(opacity(x, 6, 6), 0.0f) << x;
+    for (int x : {6, 9}) EXPECT_EQ(opacityAt(gpu, x, 6, 6), 0.0f) << x;
 }
 
 TEST_F(Voxelize, TriangleOnVoxelEdgesMarksEveryVoxelAroundTheEdge) {
@@ -297,13 +299,10 @@ TEST_F(Voxelize, TriangleOnVoxelEdgesMarksEveryVoxelAroundTheEdge) {
     const Scene scene = makeScene({{glm::vec3(4, 9, 22), glm::vec3(16, 9, 22), glm::vec3(4, 9, 28)}});
     expectMatchesTwin(scene, exactGrid(32), 0.0);
     const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
-    const auto opacity = [&](int x, int y, int z) {
-        return gpu.albedoOpacity[size_t(x) + 32 * (size_t(y) + 32 * size_t(z))].a;
-    };
     // Voxels y 8 and 9, z 21 and 22.
     for (int y : {8, 9})
-        for (int z : {21, 22}) EXPECT_EQ(opacity(10, y, z), 1.0f) << y << " " << z;
-    EXPECT_EQ(opacity(10, 9, 20), 0.0f);
+        for (int z : {21, 22}) EXPECT_EQ(opacityAt(gpu, 10, y, z), 1.0f) << y << " " << z;
+    EXPECT_EQ(opacityAt(gpu, 10, 9, 20), 0.0f);
 }
 
 TEST_F(Voxelize, AnObliquePlaneMarksTheVoxelsItCrossesAndThoseBehindItNotThoseInFront) {
@@ -314,14 +313,11 @@ TEST_F(Voxelize, AnObliquePlaneMarksTheVoxelsItCrossesAndThoseBehindItNotThoseIn
     const Scene scene = makeScene({{glm::vec3(2, 2, 1), glm::vec3(20, 20, 1), glm::vec3(2, 2, 19)}});
     expectMatchesTwin(scene, exactGrid(32), 0.0);
     const VoxelImages gpu = voxelizeOnGpu(scene, exactGrid(32));
-    const auto opacity = [&](int x, int y, int z) {
-        return gpu.albedoOpacity[size_t(x) + 32 * (size_t(y) + 32 * size_t(z))].a;
-    };
     for (int z : {3, 9}) {
-        EXPECT_EQ(opacity(5, 5, z), 1.0f) << z;
-        EXPECT_EQ(opacity(4, 5, z), 1.0f) << z << ": behind the plane";
-        EXPECT_EQ(opacity(5, 4, z), 0.0f) << z << ": in front of the plane";
-        EXPECT_EQ(opacity(3, 5, z), 0.0f) << z;
+        EXPECT_EQ(opacityAt(gpu, 5, 5, z), 1.0f) << z;
+        EXPECT_EQ(opacityAt(gpu, 4, 5, z), 1.0f) << z << ": behind the plane";
+        EXPECT_EQ(opacityAt(gpu, 5, 4, z), 0.0f) << z << ": in front of the plane";
+        EXPECT_EQ(opacityAt(gpu, 3, 5, z), 0.0f) << z;
     }
 }
 
