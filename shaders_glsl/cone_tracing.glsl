@@ -227,8 +227,9 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
 // twice the half-aperture from the normal (60° for the default 60° cones), so neighbouring
 // cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
 // irradiance is π·Σ wᵢ·Lᵢ. Returns the weighted radiance (rgb) and the weighted occlusion (a).
-vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
-    uint count = max(frame.diffuseConeCount, 1u);
+// `coneCount` cones of the frame's aperture and centre weight.
+vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneCount) {
+    uint count = max(coneCount, 1u);
     float tanHalf = frame.coneTanHalfAperture;
     float centreWeight = count == 1u ? 1.0f : frame.diffuseCentreWeight;
     float sideWeight = count == 1u ? 0.0f : (1.0f - centreWeight) / float(count - 1u);
@@ -248,6 +249,11 @@ vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
         occlusion += sideWeight * side.occlusion;
     }
     return vec4(radiance, occlusion);
+}
+
+// The frame's diffuse cones (frame.diffuseConeCount).
+vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
+    return traceDiffuseConeSet(origin, normal, startHeight, frame.diffuseConeCount);
 }
 
 // The GGX lobe as one cone: the cone that holds half of the lobe's energy. GGX puts a fraction

@@ -363,6 +363,24 @@ TEST_F(Frame, EachBounceAddsLessLightThanTheOneBefore) {
     EXPECT_LT(all, 2.0 * sums[0] + 2.0 * (sums[2] - sums[0]));
 }
 
+TEST_F(Frame, VoxelBouncesGatherWithSixConesWhenTheImageTracesOne) {
+    // The voxels' converged light, seen through the voxel radiance view: the same whether the image
+    // traces one diffuse cone or six of the same aperture, since a bounce gathers with at least six
+    // (bounce_gather.comp). With one, the Cornell box's voxels converged to a different light.
+    RenderSettings settings = smallSettings();
+    settings.shading.debugView = DebugView::VoxelRadiance;
+    std::vector<Image> images;
+    for (uint32_t cones : {1u, 6u}) {
+        settings.shading.diffuseConeCount = cones;
+        Renderer renderer(gpu(), scene, settings);
+        EXPECT_TRUE(renderer.renderFrame().bouncesConverged) << cones;
+        images.push_back(renderer.readImage());
+    }
+    ASSERT_EQ(images[0].rgb.size(), images[1].rgb.size());
+    EXPECT_GT(imageSum(images[1]), 0.0);
+    EXPECT_EQ(std::memcmp(images[0].rgb.data(), images[1].rgb.data(), images[0].rgb.size() * sizeof(float)), 0);
+}
+
 TEST_F(Frame, ConvergedLightIsTheSameForTheSameInputs) {
     // Re-lighting starts again from the light sources, so the image does not creep towards the
     // fixed point frame after frame.
