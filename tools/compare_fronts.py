@@ -15,9 +15,9 @@ import math
 import sys
 
 
-def settings(path, scenes):
+def settings(results, scenes):
     by_setting = {}
-    for result in json.load(open(path))["results"]:
+    for result in results:
         if result["scene"] in scenes:
             by_setting.setdefault(result["setting"], []).append(result)
     points = []
@@ -39,17 +39,14 @@ def front(points):
     return kept
 
 
-def scenes_of(path):
-    return {r["scene"] for r in json.load(open(path))["results"]}
-
-
 def main():
     args = sys.argv[1:]
     if len(args) not in (2, 4) or (len(args) == 4 and args[2] != "--scenes"):
         sys.exit(__doc__)
-    old_path, new_path = args[0], args[1]
-    scenes = set(args[3].split(",")) if len(args) == 4 else scenes_of(old_path) & scenes_of(new_path)
-    old, new = front(settings(old_path, scenes)), front(settings(new_path, scenes))
+    old_results, new_results = (json.load(open(path))["results"] for path in args[:2])
+    shared = {r["scene"] for r in old_results} & {r["scene"] for r in new_results}
+    scenes = set(args[3].split(",")) if len(args) == 4 else shared
+    old, new = front(settings(old_results, scenes)), front(settings(new_results, scenes))
     if not old or not new:
         sys.exit("no setting was measured on every scene of " + ", ".join(sorted(scenes)))
     print("scenes:", ", ".join(sorted(scenes)))
