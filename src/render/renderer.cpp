@@ -111,7 +111,8 @@ void Renderer::resize(const ImageSettings& image) {
                                                          context_, samplesWide, samplesHigh, image.diffuseDownscale)
                                                    : nullptr;
     shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
-    resolvePass_ = std::make_unique<ResolvePass>(context_, width, height, settings_.image.supersample);
+    resolvePass_ =
+        image.supersample > 1 ? std::make_unique<ResolvePass>(context_, width, height, image.supersample) : nullptr;
     stale_.view = true;
 }
 
@@ -443,13 +444,13 @@ bool Renderer::meanRadianceSettled() {
 }
 
 Image Renderer::readImage() {
-    const uint32_t width = resolvePass_->width, height = resolvePass_->height;
+    const uint32_t width = settings_.image.width, height = settings_.image.height;
     Buffer readback(context_, VkDeviceSize(width) * height * 4 * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     submitAndWait(context_, [&](VkCommandBuffer commands) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {width, height, 1};
-        const VkImage resolved = resolvePass_->resolved.image;
+        const VkImage resolved = output().image;
         imageBarrier(commands, resolved, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                      VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -477,8 +478,9 @@ uint64_t Renderer::deviceMemoryBytes() const {
     for (const GpuImage* image : std::initializer_list<const GpuImage*>{
              &gbufferPass_->position, &gbufferPass_->normal, &gbufferPass_->baseColor, &gbufferPass_->emissive,
              &gbufferPass_->depth, &gbufferPass_->lastPosition, &gbufferPass_->lastNormal, &shadePass_->radiance,
-             &resolvePass_->resolved, &shadowPass_->sunMaps, &shadowPass_->localMaps, &shadowPass_->areaMaps})
+             &shadowPass_->sunMaps, &shadowPass_->localMaps, &shadowPass_->areaMaps})
         bytes += image->memorySize;
+    if (resolvePass_) bytes += resolvePass_->resolved.memorySize;
     if (diffuseConesPass_) bytes += diffuseConesPass_->memoryBytes();
     for (const GpuImage& texture : sceneGpu_->textures) bytes += texture.memorySize;
     for (const Buffer* buffer : std::initializer_list<const Buffer*>{

@@ -1,7 +1,7 @@
 // The frame: records the passes the frame plan (render/frame_plan.h) picks, in pipeline order,
 //
 //   shadow maps → voxelize → inject light → mips (→ bounce) → G-buffer → full-screen shading
-//   (direct light and cone tracing) → resolve (supersample average)
+//   (direct light and cone tracing) → resolve (supersample average, with supersamples)
 //
 // and hands back the image. What did not change is not redone.
 #pragma once
@@ -98,9 +98,9 @@ public:
     glm::vec3 sceneOrigin() const { return sceneOrigin_; }
     const glsl::VoxelGridParams& voxelGrid() const { return grid_; }  // in the local frame
     const VoxelVolumes& volumes() const { return *volumes_; }
-    // The last frame's resolved image (RGBA32F, width × height, GENERAL layout), e.g. for a viewer
-    // to tone-map onto its swapchain.
-    const GpuImage& output() const { return resolvePass_->resolved; }
+    // The last frame's image (RGBA32F, width × height, GENERAL layout): the resolved one, or at one
+    // sample per pixel the shading pass's own, e.g. for a viewer to tone-map onto its swapchain.
+    const GpuImage& output() const { return resolvePass_ ? resolvePass_->resolved : shadePass_->radiance; }
     // Device memory held by the renderer's images and buffers, in bytes.
     uint64_t deviceMemoryBytes() const;
 

@@ -22,7 +22,7 @@ void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled)
                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     DescriptorPush()
-        .sampledImage(0, supersampled.view, pointSampler.sampler)
+        .sampledImage(0, supersampled.view, pointSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(1, resolved.view)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
     vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(supersample), &supersample);

@@ -1,4 +1,6 @@
-// Averages each pixel's supersample² samples (a box filter over the pixel's square).
+// Averages each pixel's supersample² samples (a box filter over the pixel's square). At one
+// sample per pixel there is nothing to average: the frame plan leaves it out and the shading
+// pass's image is the output.
 #pragma once
 
 #include "gpu/pipelines.h"
@@ -9,7 +11,7 @@ namespace vct {
 struct ResolvePass {
     ResolvePass(GpuContext& context, uint32_t width, uint32_t height, uint32_t supersample);
 
-    // Reads `supersampled` (SHADER_READ_ONLY_OPTIMAL); leaves `resolved` in GENERAL.
+    // Reads `supersampled` (GENERAL); leaves `resolved` in GENERAL.
     void record(VkCommandBuffer commands, const GpuImage& supersampled);
 
     uint32_t width, height, supersample;

@@ -43,7 +43,7 @@ struct ShadeInputs {
 struct ShadePass {
     ShadePass(GpuContext& context, uint32_t width, uint32_t height);
 
-    // Leaves `radiance` in SHADER_READ_ONLY_OPTIMAL.
+    // Leaves `radiance` in GENERAL.
     void record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
                 const ShadowPass& shadows, const VoxelVolumes& volumes);
 

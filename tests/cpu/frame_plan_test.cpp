@@ -26,6 +26,15 @@ TEST(FramePlan, NothingChangedRunsOnlyTheImagePasses) {
     EXPECT_EQ(names(planFrame(nothing, RenderSettings{})), (Names{"shade", "resolve"}));
 }
 
+TEST(FramePlan, OneSamplePerPixelHasNothingToResolve) {
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false, .view = false};
+    RenderSettings settings;
+    settings.image.supersample = 1;
+    EXPECT_EQ(names(planFrame(nothing, settings)), (Names{"shade"})) << "the shading pass's image is the output";
+    settings.image.supersample = 2;
+    EXPECT_TRUE(planFrame(nothing, settings).runs(Pass::Resolve));
+}
+
 TEST(FramePlan, OnlyAChangedViewRedrawsTheGBuffer) {
     const StaleInputs view{.shadows = false, .voxels = false, .radiance = false, .view = true};
     EXPECT_EQ(names(planFrame(view, RenderSettings{})), (Names{"gbuffer", "shade", "resolve"}));
