@@ -80,7 +80,7 @@ const char* sharedWallName(SharedWall wall) {
     return "two-faces";
 }
 
-Scene makeTwoRoomScene(float wallX, SharedWall wall) {
+Scene makeTwoRoomScene(float wallX, SharedWall wall, float thickness) {
     Scene scene;
     scene.name = "two rooms";
     scene.materials.push_back(lambertianWhite(0.7f));  // no specular cone: the leak is all diffuse
@@ -101,8 +101,8 @@ Scene makeTwoRoomScene(float wallX, SharedWall wall) {
         case SharedWall::SheetFacingLitRoom: addWall(wallX, -1.0f); break;
         case SharedWall::SheetFacingDarkRoom: addWall(wallX, 1.0f); break;
         case SharedWall::TwoFaces:
-            addWall(wallX - 0.5f * kTwoFacedWallThickness, -1.0f);
-            addWall(wallX + 0.5f * kTwoFacedWallThickness, 1.0f);
+            addWall(wallX - 0.5f * thickness, -1.0f);
+            addWall(wallX + 0.5f * thickness, 1.0f);
             break;
     }
 
@@ -150,7 +150,11 @@ Camera litRoomCamera() { return roomCamera({-0.97f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.
 Camera darkRoomCamera() { return roomCamera({0.97f, 0.5f, 0.5f}, {-1.0f, 0.0f, 0.0f}); }
 
 LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX, SharedWall wall) {
-    Renderer renderer(context, makeTwoRoomScene(wallX, wall), settings);
+    return measureLightLeak(context, settings, makeTwoRoomScene(wallX, wall));
+}
+
+LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, const Scene& twoRooms) {
+    Renderer renderer(context, twoRooms, settings);
     LeakMeasurement leak;
     renderer.setCamera(litRoomCamera());
     renderer.renderFrame();

@@ -36,7 +36,8 @@ inline constexpr SharedWall kSharedWalls[] = {SharedWall::SheetFacingLitRoom, Sh
 // "sheet-facing-lit-room", "sheet-facing-dark-room", "two-faces".
 const char* sharedWallName(SharedWall wall);
 inline constexpr float kTwoFacedWallThickness = 0.01f;  // metres: a third of a voxel at 64³
-Scene makeTwoRoomScene(float wallX, SharedWall wall);
+// `thickness`: the two faces' distance apart (TwoFaces only), metres.
+Scene makeTwoRoomScene(float wallX, SharedWall wall, float thickness = kTwoFacedWallThickness);
 // Cameras inside each room, looking at the shared wall.
 Camera litRoomCamera();
 Camera darkRoomCamera();
@@ -48,6 +49,7 @@ struct LeakMeasurement {
     double leakRatio() const { return litRoomLuminance > 0.0 ? darkRoomLuminance / litRoomLuminance : 0.0; }
 };
 LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX, SharedWall wall);
+LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, const Scene& twoRooms);
 
 // ---- Self-illumination: a lone 2 m square lit by a sun 45° up, and nothing else. No light can
 // reach it twice, so its true indirect light is 0: whatever indirect light it gets, it gathered from
