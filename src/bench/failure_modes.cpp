@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/renderer.h"
+#include "render/voxel_grid_fit.h"
 
 namespace vct::bench {
 
@@ -114,6 +115,10 @@ Scene makeTwoRoomScene(float wallX, SharedWall wall, float thickness) {
     scene.lights.push_back(light);
     scene.cameras.push_back(darkRoomCamera());
     return scene;
+}
+
+float twoRoomVoxelSize(uint32_t resolution) {
+    return fitVoxelGrid(makeTwoRoomScene(0.0f, SharedWall::TwoFaces).bounds(), resolution).originVoxelSize.w;
 }
 
 Scene makeLonePlaneScene() {

@@ -38,6 +38,9 @@ const char* sharedWallName(SharedWall wall);
 inline constexpr float kTwoFacedWallThickness = 0.01f;  // metres: a third of a voxel at 64³
 // `thickness`: the two faces' distance apart (TwoFaces only), metres.
 Scene makeTwoRoomScene(float wallX, SharedWall wall, float thickness = kTwoFacedWallThickness);
+// The voxel size of the grid fitted to the two rooms at `resolution`: what a wall's position inside
+// its voxel and its thickness are counted in.
+float twoRoomVoxelSize(uint32_t resolution);
 // Cameras inside each room, looking at the shared wall.
 Camera litRoomCamera();
 Camera darkRoomCamera();

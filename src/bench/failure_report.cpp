@@ -5,7 +5,6 @@
 
 #include "bench/matrix.h"
 #include "io/json_text.h"
-#include "render/voxel_grid_fit.h"
 #include "scene/load.h"
 
 namespace vct::bench {
@@ -37,9 +36,7 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     report.setting = settingLabel(settings);
 
     // The fitted grid gives the leak measurement its voxel size (the two rooms span 2 m along x).
-    const float voxel =
-        fitVoxelGrid(makeTwoRoomScene(0.0f, SharedWall::TwoFaces).bounds(), settings.resources.voxelResolution)
-            .originVoxelSize.w;
+    const float voxel = twoRoomVoxelSize(settings.resources.voxelResolution);
     for (SharedWall wall : kSharedWalls)
         for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
             report.leaks.push_back({wall, offset, measureLightLeak(context, settings, offset * voxel, wall)});

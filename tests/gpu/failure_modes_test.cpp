@@ -60,7 +60,7 @@ TEST_F(FailureModes, ThinWallsLeakNoMoreLightIntoTheDarkRoomThanTheyDid) {
     // The wall on a voxel boundary (x = 0 is one, the grid being centred on the scene) and inside
     // a voxel (a third of the way through one at 64³), as one sheet facing either room or as two faces.
     const RenderSettings settings = smallSettings(32, 64);
-    const float voxel = 2.0f / 62.0f;
+    const float voxel = bench::twoRoomVoxelSize(64);
     for (size_t w = 0; w < std::size(bench::kSharedWalls); ++w)
         for (float wallX : {0.0f, voxel / 3.0f, -voxel / 2.0f}) {
             const bench::SharedWall wall = bench::kSharedWalls[w];
@@ -86,7 +86,7 @@ TEST_F(FailureModes, ATwoFacedWallLeaksLessTheThickerItIs) {
     // than the footprints the cones reach it with stops leaking: no sided voxel format alone takes a
     // thin wall below a few per cent.
     const RenderSettings settings = smallSettings(32, 64);
-    const float voxel = 2.0f / 62.0f;
+    const float voxel = bench::twoRoomVoxelSize(64);
     double thinnerLeak = 1.0;
     for (float thicknessVoxels : {1.0f / 3.0f, 2.0f, 8.0f}) {
         const bench::LeakMeasurement leak = bench::measureLightLeak(
