@@ -162,8 +162,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
                 std::printf(" %7.1f ms moving light (1/%u bounce)", m.lightMovingFrame->cpuMilliseconds,
                             m.bounceSlices);
             if (m.errors)
-                std::printf("   relMSE full %.4f direct %.4f indirect %.4f", m.errors->full.relMse,
-                            m.errors->direct.relMse, m.errors->indirect.relMse);
+                std::printf("   relMSE full %.4f direct %.4f indirect %.4f   ind.lum %.2f shadow %.2f",
+                            m.errors->full.relMse, m.errors->direct.relMse, m.errors->indirect.relMse,
+                            m.errors->indirect.luminanceRatio, m.errors->shadowedIndirectRatio);
             std::printf("%s\n", m.imagesFinite ? "" : "   NON-FINITE PIXELS");
         });
         ++measured;
@@ -197,8 +198,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
     outputs.emplace_back(outDir + "/bench.svg", bench::toSvg(summary, info));
     progress.hideWhile([&] {
         std::printf(
-            "\nover all scenes: times are means, relMSE (full, direct, indirect light) and ind.lum (indirect\n"
-            "luminance / reference) geometric means\n%s",
+            "\nover all scenes: times are means, relMSE (full, direct, indirect light), ind.lum (indirect\n"
+            "luminance / reference) and shadow (the same where the reference's direct light is under a\n"
+            "tenth of its mean) geometric means\n%s",
             bench::summaryTable(summary).c_str());
         std::printf("measured in %.0f s\n", info.seconds);
     });

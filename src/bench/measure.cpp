@@ -210,7 +210,8 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
         if (references) {
             m.errors =
                 ModeErrors{compareImages(m.fullImage, references->full), compareImages(direct, references->direct),
-                           compareImages(indirect, references->indirect)};
+                           compareImages(indirect, references->indirect),
+                           shadowedLuminanceRatio(indirect, references->indirect, references->direct)};
         }
         if (options.onMeasured) options.onMeasured(m);
     }

@@ -53,6 +53,7 @@ FrameTiming medianTiming(const std::vector<FrameStats>& frames);
 
 struct ModeErrors {
     ImageError full, direct, indirect;
+    double shadowedIndirectRatio = 0.0;  // shadowedLuminanceRatio of the indirect image (metrics.h)
 };
 
 struct Measurement {

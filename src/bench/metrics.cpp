@@ -62,6 +62,23 @@ ImageError compareImages(const Image& image, const Image& reference, const Metri
     return error;
 }
 
+double shadowedLuminanceRatio(const Image& indirect, const Image& referenceIndirect, const Image& referenceDirect,
+                              double shadowFraction) {
+    requireSameSize(indirect, referenceIndirect, "comparing with the reference");
+    requireSameSize(referenceDirect, referenceIndirect, "comparing with the reference");
+    const size_t pixels = size_t(referenceDirect.width) * referenceDirect.height;
+    double directSum = 0.0;
+    for (size_t i = 0; i < pixels; ++i) directSum += luminance(&referenceDirect.rgb[3 * i]);
+    const double shadowBelow = pixels ? shadowFraction * directSum / double(pixels) : 0.0;
+    double imageSum = 0.0, referenceSum = 0.0;
+    for (size_t i = 0; i < pixels; ++i) {
+        if (!(luminance(&referenceDirect.rgb[3 * i]) < shadowBelow)) continue;
+        imageSum += luminance(&indirect.rgb[3 * i]);
+        referenceSum += luminance(&referenceIndirect.rgb[3 * i]);
+    }
+    return referenceSum > 0.0 ? imageSum / referenceSum : std::numeric_limits<double>::quiet_NaN();
+}
+
 Image addImages(const Image& a, const Image& b) {
     requireSameSize(a, b, "adding images");
     Image sum = a;

@@ -37,6 +37,15 @@ double luminance(const float* rgb);
 // ratio of 1 when the image is black too, and infinity otherwise.
 ImageError compareImages(const Image& image, const Image& reference, const MetricTolerances& tolerances = {});
 
+// Indirect light where it is all there is: its luminance over the pixels that the reference's direct
+// light leaves in shadow (under `shadowFraction` × that light's mean over the image), against the
+// reference's indirect light there. Shadows are where a viewer judges indirect light (the blocks'
+// shadowed faces in the Cornell box), and where a whole image's ratio hides errors: a box whose lit
+// walls are too bright and whose shadows too dark averages out. NaN where no pixel is in shadow or
+// the reference's indirect light there is black. Throws vct::Error when the sizes differ.
+double shadowedLuminanceRatio(const Image& indirect, const Image& referenceIndirect, const Image& referenceDirect,
+                              double shadowFraction = 0.1);
+
 // a + b, pixel by pixel (the full reference is direct + indirect). Sizes must agree.
 Image addImages(const Image& a, const Image& b);
 

@@ -91,6 +91,11 @@ std::vector<SettingSummary> summarize(const std::vector<Measurement>& measuremen
             s.relMseDirect += std::log(std::max(m.errors->direct.relMse, kSmallestError));
             s.relMseIndirect += std::log(std::max(m.errors->indirect.relMse, kSmallestError));
             s.luminanceRatioIndirect += std::log(std::max(m.errors->indirect.luminanceRatio, kSmallestError));
+            // A scene without shadows (NaN) has nothing to add to it.
+            if (std::isfinite(m.errors->shadowedIndirectRatio)) {
+                ++s.scenesWithShadows;
+                s.shadowedRatioIndirect += std::log(std::max(m.errors->shadowedIndirectRatio, kSmallestError));
+            }
         }
     }
     std::vector<CostAndError> points;
@@ -103,6 +108,8 @@ std::vector<SettingSummary> summarize(const std::vector<Measurement>& measuremen
         s.relMseDirect = std::exp(s.relMseDirect / withReference);
         s.relMseIndirect = std::exp(s.relMseIndirect / withReference);
         s.luminanceRatioIndirect = std::exp(s.luminanceRatioIndirect / withReference);
+        s.shadowedRatioIndirect =
+            std::exp(s.shadowedRatioIndirect / (s.scenesWithShadows ? double(s.scenesWithShadows) : NAN));
         points.push_back({s.staticMilliseconds, s.relMseFull});
     }
     for (size_t index : paretoFront(points)) summary[index].onFront = true;
@@ -119,6 +126,7 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
            "device_mb,finite";
     for (const char* mode : kModes)
         csv << "," << mode << "_relmse," << mode << "_rmse," << mode << "_luminance_ratio," << mode << "_share_off";
+    csv << ",shadowed_indirect_luminance_ratio";
     for (const std::string& pass : passes) csv << ",static_" << pass << "_ms";
     for (const std::string& pass : passes) csv << ",light_change_" << pass << "_ms";
     csv << "\n";
@@ -143,6 +151,7 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
             csv << "," << number(e.relMse) << "," << number(e.rmse) << "," << number(e.luminanceRatio) << ","
                 << number(e.shareOff);
         }
+        csv << "," << (m.errors ? number(m.errors->shadowedIndirectRatio) : std::string());
         for (const std::string& pass : passes) csv << "," << number(passTime(m.staticFrame, pass));
         for (const std::string& pass : passes) csv << "," << number(passTime(m.lightChangeFrame, pass));
         csv << "\n";
@@ -192,7 +201,9 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
         if (m.errors)
             json << "{\"full\": " << jsonError(m.errors->full)
                  << ",\n               \"direct\": " << jsonError(m.errors->direct)
-                 << ",\n               \"indirect\": " << jsonError(m.errors->indirect) << "}}";
+                 << ",\n               \"indirect\": " << jsonError(m.errors->indirect)
+                 << ",\n               \"shadowed_indirect_luminance_ratio\": "
+                 << jsonNumber(m.errors->shadowedIndirectRatio) << "}}";
         else json << "null}";
     }
     json << "\n  ],\n  \"summary\": [";
@@ -206,6 +217,7 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
              << ", \"relmse_direct\": " << jsonNumber(s.relMseDirect)
              << ", \"relmse_indirect\": " << jsonNumber(s.relMseIndirect)
              << ", \"luminance_ratio_indirect\": " << jsonNumber(s.luminanceRatioIndirect)
+             << ", \"shadowed_luminance_ratio_indirect\": " << jsonNumber(s.shadowedRatioIndirect)
              << ", \"scenes_with_reference\": " << s.scenesWithReference
              << ", \"on_front\": " << (s.onFront ? "true" : "false") << "}";
     }
@@ -229,8 +241,8 @@ std::string toSvg(const std::vector<SettingSummary>& summary, const RunInfo& inf
 std::string summaryTable(const std::vector<SettingSummary>& summary) {
     std::ostringstream table;
     char line[256];
-    std::snprintf(line, sizeof line, "%-30s %-9s %9s %9s %8s %9s %9s %9s %7s\n", "setting", "preset", "static ms",
-                  "light ms", "MB", "relMSE", "direct", "indirect", "ind.lum");
+    std::snprintf(line, sizeof line, "%-30s %-9s %9s %9s %8s %9s %9s %9s %7s %7s\n", "setting", "preset", "static ms",
+                  "light ms", "MB", "relMSE", "direct", "indirect", "ind.lum", "shadow");
     table << line;
     for (const SettingSummary& s : summary) {
         const auto field = [](double value, int decimals) {
@@ -239,11 +251,11 @@ std::string summaryTable(const std::vector<SettingSummary>& summary) {
             std::snprintf(text, sizeof text, "%.*f", decimals, value);
             return std::string(text);
         };
-        std::snprintf(line, sizeof line, "%-30s %-9s %9.1f %9.1f %8.1f %9s %9s %9s %7s%s\n", s.label.c_str(),
+        std::snprintf(line, sizeof line, "%-30s %-9s %9.1f %9.1f %8.1f %9s %9s %9s %7s %7s%s\n", s.label.c_str(),
                       s.preset.c_str(), s.staticMilliseconds, s.lightChangeMilliseconds, s.deviceMegabytes,
                       field(s.relMseFull, 4).c_str(), field(s.relMseDirect, 4).c_str(),
                       field(s.relMseIndirect, 4).c_str(), field(s.luminanceRatioIndirect, 2).c_str(),
-                      s.onFront ? "  *front" : "");
+                      field(s.shadowedRatioIndirect, 2).c_str(), s.onFront ? "  *front" : "");
         table << line;
     }
     return table.str();

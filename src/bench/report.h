@@ -20,7 +20,8 @@ struct SettingSummary {
     double deviceMegabytes = 0.0;                                       // the largest over scenes
     double relMseFull = 0.0, relMseDirect = 0.0, relMseIndirect = 0.0;  // geometric means
     double luminanceRatioIndirect = 0.0;  // geometric mean of indirect luminance / reference
-    size_t scenesWithReference = 0;
+    double shadowedRatioIndirect = 0.0;   // ... and of that ratio in the shadows (shadowedLuminanceRatio)
+    size_t scenesWithReference = 0, scenesWithShadows = 0;
     bool onFront = false;  // Pareto-optimal in (staticMilliseconds, relMseFull)
 };
 

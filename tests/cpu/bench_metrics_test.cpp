@@ -100,6 +100,29 @@ TEST(BenchMetrics, FullReferenceIsTheSumOfDirectAndIndirect) {
     for (float v : sum.rgb) EXPECT_EQ(v, 0.75f);
 }
 
+TEST(BenchMetrics, TheShadowedRatioCountsOnlyPixelsTheDirectLightMisses) {
+    // Four pixels: two lit (direct 1), two in shadow (direct 0 and 0.04, under a tenth of the mean
+    // 0.51). The image's indirect light is right where it is lit and half of it in the shadows.
+    Image direct = uniformImage(4, 1, 1.0f), reference = uniformImage(4, 1, 0.2f), image = uniformImage(4, 1, 0.2f);
+    setPixel(direct, 2, 0, 0.04f);
+    setPixel(direct, 3, 0, 0.0f);
+    setPixel(reference, 2, 0, 0.3f);
+    setPixel(reference, 3, 0, 0.1f);
+    setPixel(image, 2, 0, 0.15f);
+    setPixel(image, 3, 0, 0.05f);
+    EXPECT_NEAR(shadowedLuminanceRatio(image, reference, direct), 0.5, 1e-6);
+    // The whole image's ratio hides it: (0.2 + 0.2 + 0.15 + 0.05) / 0.8.
+    EXPECT_NEAR(compareImages(image, reference).luminanceRatio, 0.75, 1e-6);
+    // A threshold above the lit pixels counts them too.
+    EXPECT_NEAR(shadowedLuminanceRatio(image, reference, direct, 2.0), 0.6 / 0.8, 1e-6);
+}
+
+TEST(BenchMetrics, AnImageWithoutShadowsHasNoShadowedRatio) {
+    const Image lit = uniformImage(3, 3, 1.0f);
+    EXPECT_TRUE(std::isnan(shadowedLuminanceRatio(lit, lit, lit)));
+    EXPECT_THROW(shadowedLuminanceRatio(uniformImage(2, 2, 1.0f), lit, lit), Error);
+}
+
 TEST(ParetoFront, KeepsOnlyPointsNoOtherBeatsOnBothAxes) {
     const std::vector<CostAndError> points = {
         {1.0, 5.0},  // 0: cheapest
