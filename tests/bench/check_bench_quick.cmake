@@ -14,7 +14,8 @@ foreach(name bench.csv bench.json bench.svg)
   endif()
 endforeach()
 
-# JSON: every result has finite times, memory and errors for full, direct and indirect light.
+# JSON: every result has finite times, memory and errors for full, direct and indirect light, and
+# for indirect light in the Cornell box's shadows.
 file(READ ${OUT_DIR}/bench.json json)
 string(JSON results ERROR_VARIABLE json_error GET "${json}" results)
 if(json_error)
@@ -29,7 +30,8 @@ foreach(i RANGE ${last})
   foreach(path "static;gpu_ms" "light_change;gpu_ms" "device_memory_bytes"
                "error;full;relmse" "error;full;rmse" "error;full;luminance_ratio" "error;full;share_off"
                "error;direct;relmse" "error;direct;luminance_ratio" "error;indirect;relmse"
-               "error;indirect;luminance_ratio" "error;indirect;share_off")
+               "error;indirect;luminance_ratio" "error;indirect;share_off"
+               "error;shadowed_indirect_luminance_ratio")
     string(JSON type TYPE "${json}" results ${i} ${path})
     if(NOT type STREQUAL "NUMBER")
       message(FATAL_ERROR "bench.json results[${i}].${path} is ${type}, not a finite number")
@@ -44,6 +46,12 @@ string(JSON summary_count LENGTH "${json}" summary)
 if(NOT summary_count EQUAL 2)
   message(FATAL_ERROR "bench.json has ${summary_count} summary rows, expected 2")
 endif()
+foreach(i 0 1)
+  string(JSON type TYPE "${json}" summary ${i} shadowed_luminance_ratio_indirect)
+  if(NOT type STREQUAL "NUMBER")
+    message(FATAL_ERROR "bench.json summary[${i}].shadowed_luminance_ratio_indirect is ${type}, not a finite number")
+  endif()
+endforeach()
 
 # CSV: a header and two rows with as many fields, the numeric ones all finite.
 file(STRINGS ${OUT_DIR}/bench.csv lines)
@@ -62,7 +70,7 @@ foreach(row 1 2)
     message(FATAL_ERROR "bench.csv row ${row} has ${row_count} fields, the header ${field_count}")
   endif()
   foreach(column static_gpu_ms light_change_gpu_ms device_mb full_relmse direct_relmse indirect_relmse
-                 indirect_luminance_ratio indirect_share_off)
+                 indirect_luminance_ratio indirect_share_off shadowed_indirect_luminance_ratio)
     list(FIND header_fields ${column} at)
     list(GET fields ${at} value)
     if(at LESS 0 OR NOT value MATCHES "^[0-9.eE+-]+$" OR value MATCHES "[nN][aA][nN]|[iI][nN][fF]")
