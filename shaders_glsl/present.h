@@ -12,6 +12,7 @@ struct TonemapPush {
     vec2 inverseAreaSize;  // 1 / its size
     float exposure;
     uint applyToneCurve;  // 0 = show values as they are (clamped to 0..1)
+    uint toneCurve;       // TONE_CURVE_* (tone_curve.h)
 };
 
 struct GridBoundsPush {

@@ -13,12 +13,11 @@ layout(location = 0) out vec4 color;
 
 void main() {
     vec3 value = textureLod(radiance, (gl_FragCoord.xy - push.areaOffset) * push.inverseAreaSize, 0.0f).rgb;
-    vec3 mapped;
-    for (int c = 0; c < 3; ++c) {
-        // NaN and infinity (a broken pixel) show black, as in the PNG writer.
-        float channel = isnan(value[c]) || isinf(value[c]) ? 0.0f : value[c];
-        mapped[c] = encodeSrgb(push.applyToneCurve != 0u ? tonemapAces(channel * push.exposure)
-                                                         : clamp(channel, 0.0f, 1.0f));
-    }
+    // NaN and infinity (a broken pixel) show black, as in the PNG writer.
+    bvec3 broken = bvec3(isnan(value.x) || isinf(value.x), isnan(value.y) || isinf(value.y),
+                         isnan(value.z) || isinf(value.z));
+    value = mix(value, vec3(0.0f), broken);
+    vec3 mapped = push.applyToneCurve != 0u ? toneMap(value * push.exposure, push.toneCurve) : clamp(value, 0.0f, 1.0f);
+    for (int c = 0; c < 3; ++c) mapped[c] = encodeSrgb(mapped[c]);
     color = vec4(mapped, 1.0f);
 }

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "error.h"
+#include "io/display_transform.h"
 #include "io/image_io.h"
 
 namespace {
@@ -62,7 +63,7 @@ TEST(ImageIo, FailedWriteLeavesThePreviousFileIntact) {
 
 TEST(ImageIo, PngIsWrittenWithSignature) {
     const std::string path = temporaryPath("picture.png");
-    vct::writeImage(path, twoByTwo(), 0.5f);
+    vct::writeImage(path, twoByTwo(), vct::DisplayTransform{0.5f, vct::ToneCurve::Aces});
     std::ifstream in(path, std::ios::binary);
     char signature[8] = {};
     in.read(signature, 8);

@@ -1,5 +1,6 @@
 // vct render: one image, written as linear radiance (.pfm) or tone-mapped sRGB (.png).
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "app/commands.h"
@@ -7,7 +8,9 @@
 #include "app/progress_line.h"
 #include "app/scene_setup.h"
 #include "error.h"
+#include "io/display_transform.h"
 #include "io/output_paths.h"
+#include "render/presets.h"
 #include "render/renderer.h"
 #include "render/renderer_limits.h"
 
@@ -16,7 +19,10 @@ namespace vct {
 static std::vector<Option> renderOptions() {
     std::vector<Option> options = {
         {"out", "FILE.pfm|FILE.png", "linear radiance (.pfm) or a tone-mapped sRGB image (.png)"},
-        {"exposure", "F", "PNG only: radiance multiplier before tone mapping (default 1)"},
+        {"exposure", "EV",
+         "PNG only: a fixed exposure, radiance × 2^EV (default: automatic, the image's "
+         "log-average luminance at middle grey)"},
+        {"tone-curve", "pbr-neutral|aces", "PNG only: Khronos PBR Neutral or ACES filmic (default pbr-neutral)"},
         {"frames", "N", "render N frames, keep the last (default 1)"},
     };
     options.insert(options.end(), sharedOptions().begin(), sharedOptions().end());
@@ -27,17 +33,27 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Option> options = renderOptions();
     const Arguments arguments = parseArguments(rawArguments, options);
-    if (answerHelpOrVersion(arguments, "vct render --out FILE.pfm|FILE.png [options]", options, RenderSettings{}))
+    const RenderSettings defaults = *findRenderPreset(kDefaultPreset);
+    if (answerHelpOrVersion(arguments, "vct render --out FILE.pfm|FILE.png [options]", options, defaults,
+                            presetsHelp()))
         return 0;
     // Every argument and the output path first: a mistake is reported at once, not after the
     // scene has loaded and rendered (half a minute on lavapipe).
     if (!arguments.has("out")) throw Error("render needs --out FILE.pfm or FILE.png");
     const std::string outPath = arguments.text("out", "");
     checkOutputFile(outPath, {".pfm", ".png"});
-    const float exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
+    const bool fixedExposure = arguments.has("exposure");
+    const float exposureStops = arguments.number("exposure", 0.0f, -64.0f, 64.0f);
+    DisplayTransform display;
+    if (arguments.has("tone-curve")) {
+        const std::optional<ToneCurve> curve = parseToneCurve(arguments.text("tone-curve", ""));
+        if (!curve)
+            throw Error("--tone-curve must be pbr-neutral or aces, not '" + arguments.text("tone-curve", "") + "'");
+        display.curve = *curve;
+    }
     const uint32_t frames = arguments.unsignedInt("frames", 1, 1, 100000);
     const float gpuTimeout = arguments.number("gpu-timeout", 120.0f, 0.1f, 1e6f);
-    const RenderSettings settings = renderSettingsFromArguments(arguments, options);
+    const RenderSettings settings = renderSettingsFromArguments(arguments, options, defaults);
     checkSceneArguments(arguments);
 
     ProgressLine progress("vct render");
@@ -63,7 +79,8 @@ int runRender(const std::vector<std::string>& rawArguments) {
     }
     progress.setStage("writing " + outPath);
     const Image image = renderer.readImage();
-    writeImage(outPath, image, exposure);
+    display.exposure = fixedExposure ? exposureFromStops(exposureStops) : automaticExposure(image);
+    writeImage(outPath, image, display);
     progress.finish();
 
     for (const PassTime& pass : stats.passes)
@@ -75,6 +92,9 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width, image.height,
                 renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());
+    if (outPath.size() < 4 || outPath.substr(outPath.size() - 4) != ".pfm")
+        std::printf("  exposure %+.2f EV (%s), %s tone curve\n", std::log2(display.exposure),
+                    fixedExposure ? "fixed" : "automatic", toneCurveName(display.curve));
     if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");
     return 0;
 }

@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "error.h"
+#include "io/display_transform.h"
 #include "io/temporary_files.h"
-#include "tone_curve.h"
 
 namespace vct {
 
@@ -52,11 +52,13 @@ Image readPfm(const std::string& path) {
     return image;
 }
 
-void writePng(const std::string& path, const Image& image, float exposure) {
+void writePng(const std::string& path, const Image& image, const DisplayTransform& display) {
     std::vector<uint8_t> pixels(size_t(image.width) * image.height * 3);
-    for (size_t i = 0; i < pixels.size(); ++i) {
-        const float value = std::isfinite(image.rgb[i]) ? image.rgb[i] : 0.0f;
-        pixels[i] = uint8_t(std::lround(255.0f * glsl::encodeSrgb(glsl::tonemapAces(value * exposure))));
+    auto finite = [](float value) { return std::isfinite(value) ? value : 0.0f; };
+    for (size_t i = 0; i + 2 < pixels.size(); i += 3) {
+        const glm::vec3 radiance(finite(image.rgb[i]), finite(image.rgb[i + 1]), finite(image.rgb[i + 2]));
+        const glm::vec3 mapped = glsl::toneMap(radiance * display.exposure, uint32_t(display.curve));
+        for (int c = 0; c < 3; ++c) pixels[i + c] = uint8_t(std::lround(255.0f * glsl::encodeSrgb(mapped[c])));
     }
     std::string bytes;
     auto append = [](void* context, void* data, int size) {
@@ -68,7 +70,7 @@ void writePng(const std::string& path, const Image& image, float exposure) {
     writeFileAtomically(path, bytes);
 }
 
-void writeImage(const std::string& path, const Image& image, float exposure) {
+void writeImage(const std::string& path, const Image& image, const DisplayTransform& display) {
     const size_t nonFinite =
         size_t(std::count_if(image.rgb.begin(), image.rgb.end(), [](float value) { return !std::isfinite(value); }));
     if (nonFinite > 0)
@@ -80,8 +82,10 @@ void writeImage(const std::string& path, const Image& image, float exposure) {
                                               [](char a, char b) { return std::tolower(a) == b; });
     };
     if (endsWith(".pfm")) return writePfm(path, image);
-    if (endsWith(".png")) return writePng(path, image, exposure);
+    if (endsWith(".png")) return writePng(path, image, display);
     throw Error("cannot write '" + path + "': the output must end in .pfm or .png");
 }
+
+void writeImage(const std::string& path, const Image& image) { writeImage(path, image, DisplayTransform{}); }
 
 }  // namespace vct

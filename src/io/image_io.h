@@ -24,12 +24,16 @@ struct Image {
 void writePfm(const std::string& path, const Image& image);
 Image readPfm(const std::string& path);
 
-// Writes an 8-bit sRGB PNG: radiance × exposure, ACES-fitted tone curve, sRGB encoding.
-void writePng(const std::string& path, const Image& image, float exposure = 1.0f);
+struct DisplayTransform;  // io/display_transform.h
+
+// Writes an 8-bit sRGB PNG: radiance × the display's exposure, its tone curve, sRGB encoding.
+void writePng(const std::string& path, const Image& image, const DisplayTransform& display);
 
 // Writes PFM or PNG depending on the extension; throws vct::Error for anything else, and, writing
 // nothing, for an image holding NaN or infinity (a render gone wrong must not pass for an image).
-void writeImage(const std::string& path, const Image& image, float exposure = 1.0f);
+// A PNG goes through `display`.
+void writeImage(const std::string& path, const Image& image, const DisplayTransform& display);
+void writeImage(const std::string& path, const Image& image);  // a PNG at exposure 1, PBR Neutral
 
 // Writes `bytes` to `path` through a temporary file and an atomic rename; the temporary file is
 // removed on a signal (temporary_files.h).

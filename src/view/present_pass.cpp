@@ -170,7 +170,7 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.layout);
     const glsl::TonemapPush push{glm::vec2(float(area.offset.x), float(area.offset.y)),
                                  glm::vec2(1.0f / float(area.extent.width), 1.0f / float(area.extent.height)),
-                                 params.exposure, params.toneCurve ? 1u : 0u};
+                                 params.exposure, params.toneCurve ? 1u : 0u, uint32_t(params.curve)};
     vkCmdPushConstants(commands, tonemap_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDraw(commands, 3, 1, 0, 0);
 }

@@ -11,6 +11,7 @@
 
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
+#include "io/display_transform.h"
 #include "present.h"
 #include "view/swapchain.h"
 
@@ -19,6 +20,7 @@ namespace vct {
 struct TonemapParams {
     float exposure = 1.0f;
     bool toneCurve = true;  // false for debug views whose values are colours already
+    ToneCurve curve = ToneCurve::PbrNeutral;
 };
 
 class PresentPass {
