@@ -165,6 +165,20 @@ const Option& sharedOption(const std::string& name) {
     throw std::out_of_range("no shared option --" + name);
 }
 
+std::string presetsHelp() {
+    std::string help =
+        "\npresets (--preset NAME; the committed bench run: a still frame at 128x128 on lavapipe, 2 cores,\n"
+        "and the relMSE of full light against the path tracer, over the built-in scenes):\n";
+    for (const PresetSummary& preset : presetSummaries()) {
+        char line[256];
+        const std::string name = std::string(preset.name) + (preset.name == std::string(kDefaultPreset) ? " *" : "");
+        std::snprintf(line, sizeof line, "  %-11s %6.1f ms  relMSE %.3f  %s\n", name.c_str(), preset.stillFrameMs,
+                      preset.fullRelMse, preset.what);
+        help += line;
+    }
+    return help + "  (* the default)\n";
+}
+
 std::string versionText() { return std::string("vct ") + VCT_VERSION; }
 
 Arguments parseArguments(const std::vector<std::string>& arguments, const std::vector<Option>& options) {

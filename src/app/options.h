@@ -38,6 +38,9 @@ const std::vector<Option>& sharedOptions();
 const Option& sharedOption(const std::string& name);
 
 // "vct 0.1.0": CMake's project version.
+// The presets, one line each: what each is, its cost and its error (render --help).
+std::string presetsHelp();
+
 std::string versionText();
 
 // Every command takes --help (or -h) and --version besides its options.

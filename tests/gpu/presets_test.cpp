@@ -1,0 +1,39 @@
+// The presets `render --help` lists say what the committed bench run measured for them.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "render/presets.h"
+
+namespace vct {
+namespace {
+
+TEST(Presets, TheHelpsFiguresAreTheCommittedBenchRunsAndTheDefaultIsTheMostAccurate) {
+    // The front's presets come from the whole run, classic (off the front) from a run of its own.
+    std::vector<nlohmann::json> runs;
+    for (const char* name : {"bench.json", "bench-classic.json"}) {
+        std::ifstream file(std::string(VCT_TEST_DATA_DIR) + "/../../docs/" + name);
+        ASSERT_TRUE(file) << "docs/" << name;
+        runs.push_back(nlohmann::json::parse(file));
+    }
+    size_t checked = 0;
+    const PresetSummary* mostAccurate = nullptr;
+    for (const PresetSummary& preset : presetSummaries()) {
+        ASSERT_TRUE(findRenderPreset(preset.name).has_value()) << preset.name;
+        for (const nlohmann::json& bench : runs)
+            for (const nlohmann::json& row : bench.at("summary")) {
+                if (row.value("preset", "") != preset.name) continue;
+                EXPECT_NEAR(preset.stillFrameMs, row.at("static_gpu_ms").get<double>(), 0.06) << preset.name;
+                EXPECT_NEAR(preset.fullRelMse, row.at("relmse_full").get<double>(), 6e-5) << preset.name;
+                ++checked;
+            }
+        if (!mostAccurate || preset.fullRelMse < mostAccurate->fullRelMse) mostAccurate = &preset;
+    }
+    EXPECT_EQ(checked, presetSummaries().size()) << "every preset is in the committed run";
+    ASSERT_NE(mostAccurate, nullptr);
+    EXPECT_STREQ(mostAccurate->name, kDefaultPreset);
+}
+
+}  // namespace
+}  // namespace vct
