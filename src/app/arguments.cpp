@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "app/did_you_mean.h"
 #include "error.h"
 
 namespace vct {
@@ -21,7 +22,10 @@ Arguments::Arguments(const std::vector<std::string>& arguments, const std::set<s
             if (i + 1 >= arguments.size()) throw Error("option --" + name + " needs a value");
             values_[name] = arguments[++i];
         } else {
-            throw Error("unknown option --" + name + " (see --help)");
+            std::vector<std::string> known(flags.begin(), flags.end());
+            known.insert(known.end(), valued.begin(), valued.end());
+            const std::string hint = didYouMean(name, known, "--");
+            throw Error("unknown option --" + name + (hint.empty() ? " (see --help)" : hint));
         }
     }
 }

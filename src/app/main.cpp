@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/did_you_mean.h"
 #include "app/options.h"
 #include "error.h"
 #include "io/exit_immediately.h"
@@ -47,7 +48,8 @@ int main(int argc, char** argv) {
             std::printf("%s\n", vct::versionText().c_str());
             return 0;
         }
-        std::fprintf(stderr, "vct: unknown command '%s'\n", command.c_str());
+        std::fprintf(stderr, "vct: unknown command '%s'%s\n", command.c_str(),
+                     vct::didYouMean(command, {"render", "view", "bench"}).c_str());
         printUsage();
         return 1;
     } catch (const vct::Error& error) {
