@@ -34,6 +34,7 @@ static std::vector<Option> viewOptions() {
         {"frames", "N", "with --screenshot: frames to draw first (default 1)"},
         {"screenshot-ui", "", "the screenshot includes the panels"},
         {"no-guide", "", "start without the one-line hint to the usage guide (F1 opens the guide)"},
+        {"verbose", "", "print which passes each frame ran"},
         {"events", "TEXT", "scripted input, e.g. \"2 key W down; 5 key W up\" (see src/view/input.h)"},
         {"script", "FILE", "the same, read from a file"},
         {"render-scale", "1|0.5|0.25", "image size relative to the window (default 1; 0.5 on a software rasterizer)"},
@@ -88,6 +89,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     options.exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
     options.vsync = !arguments.has("no-vsync");
     options.showHint = !arguments.has("no-guide");
+    options.verbose = arguments.has("verbose");
     options.renderEveryFrame = arguments.has("render-every-frame");
     // 0 = not given: the viewer picks 1, or 0.5 on a software rasterizer.
     options.renderScale = arguments.number("render-scale", 0.0f, 0.25f, 1.0f);

@@ -39,16 +39,17 @@ bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov;
 }
 
-// Scenes with lights but no sun get one to steer, as `--light-dir` does: shining from behind the
-// camera and above, so it reaches into open boxes like the Cornell box. (Scenes without any light
-// already have the default sun, default_light.h, as in `vct render`.)
+// Scenes with lights but no sun get one to steer, switched off (intensity 0), so that the viewer
+// starts on the light `vct render` shows; the arrow keys aim it and the Lights panel turns it up.
+// It shines from behind the camera and above, so it reaches into open boxes like the Cornell box.
+// (Scenes without any light already have the default sun, default_light.h, as in `vct render`.)
 size_t ensureSun(Scene& scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (scene.lights[i].type == LightType::Directional) return i;
     Light sun;
     sun.name = "viewer sun";
     sun.type = LightType::Directional;
-    sun.intensity = 3.0f;
+    sun.intensity = 0.0f;
     const glm::vec3 forward = scene.cameras.empty() ? glm::vec3(0, 0, -1) : scene.cameras.front().forward;
     sun.direction = glm::normalize(glm::normalize(forward) + glm::vec3(0.0f, -0.7f, 0.0f));
     scene.lights.push_back(sun);
@@ -678,7 +679,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     else if (!screenshotPath.empty()) state_.notice = "this window system cannot copy from its images";
 }
 
-// Scripted runs log which passes each frame ran, so a test can check what a change cost.
+// With --verbose, which passes each frame ran, so a test (or a user) can check what a change cost.
 void Viewer::printFrameStats(const FrameStats& stats) const {
     std::printf("frame %llu: ran", static_cast<unsigned long long>(iteration_ - 1));
     for (Pass pass : stats.plan.passes) std::printf(" %s", passName(pass));
@@ -750,7 +751,7 @@ bool Viewer::loopIteration() {
         lastRenderedCamera_ = renderer_->camera();
         imageStale_ = false;
         state_.history.add(wallSeconds * 1000.0f, stats);
-        if (!options_.script.empty()) printFrameStats(stats);
+        if (options_.verbose) printFrameStats(stats);
     } else {
         state_.history.add(wallSeconds * 1000.0f, FrameStats{});  // an empty plan: the image is reused
     }

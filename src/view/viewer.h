@@ -29,6 +29,7 @@ struct ViewerOptions {
     float exposure = 1.0f;
     bool vsync = true;
     bool showHint = true;  // the status bar's one-line hint to the guide (F1)
+    bool verbose = false;  // a line a frame on stdout: the passes it ran and skipped
     // Scripted use: save the image shown on frame `frames` to `screenshotPath` and exit
     // (frames = 0: run until the window closes).
     std::string screenshotPath;
