@@ -76,6 +76,9 @@ const uint USE_SHADOWS = 64u;
 // Emissive surfaces light the room as area lights; without it their emission is put into the
 // voxels and reaches other surfaces only through the cones (the classic VCT way).
 const uint USE_AREA_LIGHTS = 128u;
+// The sky seen directly (pixels where the camera sees no surface): part of direct light, as a lamp
+// seen is, but not an emissive surface, so `--disable emission` leaves it.
+const uint SHOW_SKY = 256u;
 // The flags the voxels' light depends on (inject.comp.glsl): a change converges it again.
 const uint VOXEL_LIGHT_FLAGS = USE_SHADOWS | USE_AREA_LIGHTS;
 

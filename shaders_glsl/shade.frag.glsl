@@ -110,10 +110,10 @@ void main() {
         return;
     }
     if (positionMaterial.w < 0.5f) {
-        // Nothing in front of the camera: it sees the sky, emitted light as a lamp seen is.
+        // Nothing in front of the camera: it sees the sky, direct light as a lamp seen is.
         vec4 far = frame.inverseViewProjection * vec4(gl_FragCoord.xy * frame.inverseRenderSize * 2.0f - 1.0f, 1.0f, 1.0f);
         vec3 sky = skyRadiance(normalize(far.xyz / far.w - frame.cameraPosition), 0.0f);
-        outRadiance = vec4((frame.componentFlags & SHOW_EMISSION) != 0u ? sky : vec3(0.0f), 1.0f);
+        outRadiance = vec4((frame.componentFlags & SHOW_SKY) != 0u ? sky : vec3(0.0f), 1.0f);
         return;
     }
     vec4 normalSide = texelFetch(gNormal, pixel, 0);

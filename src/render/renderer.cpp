@@ -226,7 +226,8 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.firstAreaLight = shadowLayout_.firstAreaLight;
     constants.shadowViewCount = uint32_t(shadowLayout_.views.size());
     const ShadingSettings& shading = settings_.shading;
-    constants.componentFlags = componentFlags(effectiveComponents(shading));
+    constants.componentFlags =
+        componentFlags(effectiveComponents(shading)) | (shading.mode != RenderMode::Indirect ? glsl::SHOW_SKY : 0u);
     constants.anisotropicVoxels = settings_.resources.anisotropicVoxels ? 1u : 0u;
     constants.debugView = uint32_t(shading.debugView);
     constants.renderSize = glm::vec2(float(width), float(height));

@@ -94,6 +94,21 @@ TEST_F(Environment, TheSkyIsSeenDirectlyAndLightsAnOpenPlaneIndirectly) {
     }
 }
 
+TEST_F(Environment, SwitchingEmissionOffLeavesTheSkySeen) {
+    // `--disable emission` removes emissive surfaces' light, not the sky: the pixels past the
+    // plane's edge still see L, and the plane its light.
+    const Scene scene = planeUnderTheSky(greyLambertian());
+    RenderSettings settings = smallSettings(RenderMode::Full);
+    settings.shading.components.emission = false;
+    Renderer renderer(gpu(), scene, settings);
+    renderer.renderFrame();
+    const PlaneAndSky seen = measure(renderer.readImage());
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(seen.sky[c], kSky[c], 1e-3f);
+        EXPECT_NEAR(seen.plane[c], 0.5f * kSky[c], 0.02f * 0.5f * kSky[c]);
+    }
+}
+
 TEST_F(Environment, AMirrorReflectsTheSky) {
     // White metal of roughness 0.1: the specular cone along the reflection leaves the grid and
     // returns L, times the lobe's directional albedo. With F0 = 1 that is A + B of the split-sum fit
