@@ -28,14 +28,16 @@ int runView(const std::vector<std::string>&) {
 
 static std::vector<Option> viewOptions() {
     std::vector<Option> options = {
-        {"exposure", "F", "radiance multiplier before tone mapping (default 1)"},
+        {"exposure", "EV", "a fixed exposure, radiance × 2^EV (default: automatic, adapting to the image)"},
         {"no-vsync", "", "present as fast as possible (MAILBOX or IMMEDIATE when offered)"},
         {"screenshot", "FILE.png", "save the image shown on the last of --frames and exit"},
         {"frames", "N", "with --screenshot: frames to draw first (default 1)"},
         {"screenshot-ui", "", "the screenshot includes the panels"},
         {"no-guide", "", "start without the one-line hint to the usage guide (F1 opens the guide)"},
         {"verbose", "", "print which passes each frame ran"},
-        {"events", "TEXT", "scripted input, e.g. \"2 key W down; 5 key W up\" (see src/view/input.h)"},
+        {"events", "TEXT",
+         "scripted input: entries 'FRAME ACTION ...' separated by ';' (e.g. \"2 key W down; 5 key W up\"), the "
+         "actions below"},
         {"script", "FILE", "the same, read from a file"},
         {"render-scale", "1|0.5|0.25", "image size relative to the window (default 1; 0.5 on a software rasterizer)"},
         {"render-every-frame", "", "redraw even when nothing changed (for measuring)"},
@@ -77,8 +79,19 @@ static std::string readTextFile(const std::string& path) {
 int runView(const std::vector<std::string>& rawArguments) {
     const std::vector<Option> rows = viewOptions();
     const Arguments arguments = parseArguments(rawArguments, rows);
-    if (answerHelpOrVersion(arguments, "vct view [options]", rows, viewDefaults(),
-                            "\npress F1 in the window for the controls.\n"))
+    if (answerHelpOrVersion(
+            arguments, "vct view [options]", rows, viewDefaults(),
+            "\n--events / --script actions (FRAME counts loop iterations from 0; '#' starts a comment):\n"
+            "  key NAME down|up|press      a letter or digit, F1..F12, left, right, up, down, shift,\n"
+            "                              ctrl, tab, space, escape, [ or ]\n"
+            "  mouse X Y                   move the cursor to window coordinates X, Y\n"
+            "  button left|right down|up   scroll DY   resize W H   iconify   restore\n"
+            "  screenshot FILE.png [ui]    the image alone, or the whole window with \"ui\"\n"
+            "  drop FILE                   as if FILE were dropped on the window\n"
+            "  type TEXT                   typed into the text field that has the focus\n"
+            "  light INDEX intensity X     the scene panel's intensity field (cd, or lux for a sun)\n"
+            "  sky R G B                   the scene panel's sky radiance   quit\n"
+            "\npress F1 in the window for the controls.\n"))
         return 0;
     ViewerOptions options;
     options.settings = forTheWindow(renderSettingsFromArguments(arguments, rows, viewDefaults()), arguments);
@@ -86,7 +99,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     if (!arguments.has("preset"))
         options.softwareSettings =
             forTheWindow(renderSettingsFromArguments(arguments, rows, *findRenderPreset("fast")), arguments);
-    options.exposure = arguments.number("exposure", 1.0f, 0.0f, 1e9f);
+    if (arguments.has("exposure")) options.exposureStops = arguments.number("exposure", 0.0f, -64.0f, 64.0f);
     options.vsync = !arguments.has("no-vsync");
     options.showHint = !arguments.has("no-guide");
     options.verbose = arguments.has("verbose");

@@ -369,11 +369,32 @@ case "$case_name" in
       count=$(grep -c -- "^  $option " "$work/stdout")
       [ "$count" -eq 1 ] || fail "--help names $option $count times"
     done
-    grep -q -- "^  --voxels N .*(default 128)$" "$work/stdout" || fail "--help does not give --voxels' default"
+    # The defaults are the default preset's (quality: 64³, six 40° cones), and the presets are listed.
+    grep -q -- "^  --voxels N .*(default 64)$" "$work/stdout" || fail "--help does not give --voxels' default"
     grep -q -- "^  --cones N .*(default 6)$" "$work/stdout" || fail "--help does not give --cones' default"
+    for preset in fast balanced "quality \\*" classic; do
+      grep -qE -- "^  $preset +[0-9.]+ ms  relMSE 0\.[0-9]+  " "$work/stdout" || fail "--help does not list $preset"
+    done
     "$vct" view --help >"$work/stdout" 2>"$work/stderr" || fail "view --help failed"
     grep -q -- "^  --width W .*(default 960)$" "$work/stdout" || fail "view --help does not give its own width"
     echo "ok: the help lists each option once with its default" ;;
+  did-you-mean)
+    expect_refusal "unknown option --shadowmap (did you mean '--shadow-map'?)" --out "$good" --shadowmap 512
+    "$vct" rendr >"$work/stdout" 2>"$work/stderr"
+    [ $? -eq 1 ] || fail "a mistyped command did not exit 1"
+    grep -q "unknown command 'rendr' (did you mean 'render'?)" "$work/stderr" || fail "no 'did you mean' for rendr"
+    echo "ok: mistyped commands and options get a 'did you mean'" ;;
+  png-exposure)
+    # A PNG is exposed for the image by default and says how; --exposure fixes it, in stops.
+    "$vct" render "${small[@]}" --out "$good" >"$work/stdout" 2>"$work/stderr" || fail "render failed"
+    grep -qE "^  exposure [-+][0-9.]+ EV \(automatic\), pbr-neutral tone curve$" "$work/stdout" ||
+      fail "no automatic exposure line: $(cat "$work/stdout")"
+    "$vct" render "${small[@]}" --exposure -1.5 --tone-curve aces --out "$good" >"$work/stdout" 2>"$work/stderr" ||
+      fail "render with a fixed exposure failed"
+    grep -q "^  exposure -1.50 EV (fixed), aces tone curve$" "$work/stdout" || fail "no fixed exposure line"
+    cp "$good" "$work/expected"
+    expect_refusal "--tone-curve must be pbr-neutral or aces, not 'filmic'" --out "$good" --tone-curve filmic
+    echo "ok: automatic and fixed exposure, two tone curves" ;;
   *)
     echo "unknown case $case_name"; exit 2 ;;
 esac
