@@ -59,7 +59,7 @@ static void localLightNode(Light& light, float sceneSize) {
 }
 
 void drawLightsSection(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("Lights")) return;
     for (size_t i = 0; i < state.lights.size(); ++i) {
         Light& light = state.lights[i];
         const bool isSun = i == state.sunIndex;

@@ -18,7 +18,7 @@ namespace {
 
 // The docked settings window's width, and about the profiler's: a window narrower than both hides
 // the profiler.
-constexpr float kSettingsWidth = 370.0f;
+constexpr float kSettingsWidth = 300.0f;
 constexpr float kProfilerWidth = 330.0f;
 
 }  // namespace
@@ -120,8 +120,14 @@ static void sceneSection(ViewerState& state) {
 
 static void shadingSection(ViewerState& state, const UiFacts& facts) {
     RenderSettings& settings = state.settings;
-    if (!ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    ImGui::SliderFloat("exposure", &state.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    if (!ImGui::CollapsingHeader("Shading")) return;
+    ImGui::Checkbox("auto exposure", &state.autoExposure);
+    ImGui::SameLine();
+    // Dragging the exposure fixes it where it is.
+    if (ImGui::SliderFloat("##exposure", &state.exposureStops, -12.0f, 12.0f, "%+.2f EV")) state.autoExposure = false;
+    int curve = int(state.toneCurve);
+    ImGui::Combo("tone curve", &curve, "PBR Neutral\0ACES\0");
+    state.toneCurve = ToneCurve(curve);
     int mode = int(settings.shading.mode);
     ImGui::Combo("mode (M)", &mode, "full\0direct\0indirect\0");
     settings.shading.mode = RenderMode(mode);
@@ -189,12 +195,13 @@ static void resolutionSection(ViewerState& state) {
 }
 
 static void presetRow(ViewerState& state) {
-    ImGui::Checkbox("profiler", &state.showProfiler);
-    ImGui::SameLine();
-    ImGui::Text(" presets:");
+    bool first = true;
     for (const auto& [name, preset] : renderPresets()) {
-        ImGui::SameLine();
-        if (!ImGui::Button(name.c_str())) continue;
+        const bool clicked = flowingButton(name.c_str(), first);
+        first = false;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the %s preset (vct render --help says what each costs)", name.c_str());
+        if (!clicked) continue;
         // A preset brings its quality settings; the view (mode, toggles, debug view) stays.
         RenderSettings applied = preset;
         applied.image.width = state.settings.image.width;
@@ -226,7 +233,7 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
         return;
     }
     // Controls take what the labels (up to "local shadow map") leave.
-    ImGui::PushItemWidth(-ImGui::CalcTextSize("local shadow map  ").x);
+    ImGui::PushItemWidth(-ImGui::CalcTextSize("local shadow map ").x);
     presetRow(state);
     sceneSection(state);
     drawLightsSection(state);
@@ -238,6 +245,7 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
         ImGui::Text("%s mode (O toggles), fly speed %.2f m/s", state.cameraIsOrbiting ? "orbit" : "fly",
                     state.cameraSpeed);
         if (ImGui::Button("reset camera (R)")) state.requestCameraReset = true;
+        ImGui::Checkbox("profiler (F2)", &state.showProfiler);
         ImGui::Checkbox("vsync", &state.vsync);
         ImGui::Checkbox("screenshots include the UI", &state.screenshotWithUi);
         if (ImGui::Button("screenshot (F12)")) state.requestScreenshot = true;
@@ -247,24 +255,28 @@ void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {
 }
 
 void drawStatusBar(ViewerState& state) {
-    static const char* const hint =
-        "F1: the controls | Tab: hide the panels | right mouse + W A S D: fly | drop a .gltf/.glb to open it";
+    static const char* const hint = "F1 controls | Tab panels | right mouse + WASD fly | drop a .glb to open";
     const bool showHint = state.showHint && !state.guideOpened;
     if (state.notice.empty() && !showHint) {
         state.statusBarHeight = 0.0f;
         return;
     }
-    // Across the bottom, as tall as its wrapped lines: nothing in it is cut at the window's edge.
+    // One row across the bottom: the notice, then the hint; a notice too long for the row is cut
+    // there and shown whole in a tooltip.
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + viewport->Size.y), ImGuiCond_Always,
                             ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(viewport->Size.x, 0.0f), ImVec2(viewport->Size.x, viewport->Size.y));
+    ImGui::SetNextWindowSize(ImVec2(viewport->Size.x, ImGui::GetFrameHeight()), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(1.0f);
     ImGui::Begin("##status", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-    if (!state.notice.empty()) ImGui::TextWrapped("%s", state.notice.c_str());
-    if (showHint) wrappedNote(hint);
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    if (!state.notice.empty()) {
+        ImGui::TextUnformatted(state.notice.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", state.notice.c_str());
+        if (showHint) ImGui::SameLine(0.0f, 24.0f);
+    }
+    if (showHint) ImGui::TextDisabled("%s", hint);
     state.statusBarHeight = ImGui::GetWindowSize().y;
     ImGui::End();
 }
@@ -403,6 +415,7 @@ void drawGuideWindow(ViewerState& state) {
         {"G", "draw the voxel grid's box: amber lines over the image, edges behind the scene included"},
         {"F12 or P", "screenshot (PNG in the current folder)"},
         {"Tab", "hide or show the panels"},
+        {"F2", "the profiler: each pass's GPU time"},
         {"F1 or H", "this guide"},
         {"drop a file",
          "load a .gltf/.glb scene; or type its path under Settings > Scene, which lists the recent ones"},

@@ -97,6 +97,8 @@ private:
     glsl::GridBoundsPush gridBoundsPush() const;
     UiFacts facts() const;
     void printFrameStats(const FrameStats& stats) const;
+    void measureExposure(float seconds);
+    void adaptExposure(float seconds);
 
     ViewerOptions options_;
     GlfwSession glfw_;
@@ -112,6 +114,10 @@ private:
 
     InputState input_;
     ViewerState state_;
+    bool exposureMeasured_ = false;  // automatic exposure: targetExposure_ holds this scene's image's
+    bool exposureStale_ = false;     // an image was rendered since targetExposure_ was measured
+    float targetExposure_ = 1.0f;
+    float secondsSinceExposureMeasure_ = 0.0f;  // the loop's seconds (a script's are 1/30 each)
     Scene scene_;
     SunControl shownSun_;  // the sun the renderer has
     Camera camera_;
@@ -159,7 +165,9 @@ Viewer::Viewer(ViewerOptions options)
                         "): started on the fast preset at render scale 0.5, about 15 fps at 960x540; change them above";
     // The panel shows what the renderer does (settings.h).
     state_.settings.shading.skipEmptySpace = skipsEmptySpace(state_.settings.shading, software);
-    state_.exposure = options_.exposure;
+    state_.autoExposure = !options_.exposureStops.has_value();
+    state_.exposureStops = options_.exposureStops.value_or(0.0f);
+    state_.exposure = exposureFromStops(state_.exposureStops);
     state_.vsync = shownVsync_ = options_.vsync;
     state_.showHint = options_.showHint;
     state_.screenshotWithUi = options_.screenshotWithUi;
@@ -316,6 +324,7 @@ void Viewer::rememberSceneFile(const std::string& name) {
 
 // The panels and the camera start from the scene the renderer was just built for.
 void Viewer::showScene() {
+    exposureMeasured_ = false;  // a new scene starts at its own exposure, not the last one's
     state_.lights = scene_.lights;
     state_.environment = scene_.environment;
     state_.skyImage = scene_.environmentMap ? scene_.environmentMap->name : std::string();
@@ -400,6 +409,7 @@ void Viewer::handleKeys(float seconds) {
             case GLFW_KEY_F1:
             case GLFW_KEY_H: state_.showGuide = !state_.showGuide; break;
             case GLFW_KEY_TAB: state_.showPanels = !state_.showPanels; break;
+            case GLFW_KEY_F2: state_.showProfiler = !state_.showProfiler; break;
             case GLFW_KEY_R: state_.requestCameraReset = true; break;
             case GLFW_KEY_O: state_.requestOrbitToggle = true; break;
             case GLFW_KEY_M: settings.shading.mode = RenderMode((uint32_t(settings.shading.mode) + 1) % 3); break;
@@ -624,6 +634,7 @@ void Viewer::drawFrame(bool drawUi, const std::string& screenshotPath) {
     presentTimer_->begin(frame.commands, "present");
     TonemapParams tonemap;
     tonemap.exposure = state_.exposure;
+    tonemap.curve = state_.toneCurve;
     const DebugView view = renderer_->settings().shading.debugView;
     tonemap.toneCurve = view == DebugView::None || view == DebugView::VoxelRadiance;
     presentPass_->begin(frame.commands, imageIndex, extent, shownImageArea_, renderer_->output(), tonemap);
@@ -689,6 +700,39 @@ void Viewer::printFrameStats(const FrameStats& stats) const {
     std::fflush(stdout);
 }
 
+// Automatic exposure, as engines' eye adaptation: the exposure that puts a rendered image's
+// log-average luminance at middle grey (display_transform.h), measured from the latest image at
+// most every kExposureInterval seconds (reading it back costs a copy), at once on a new scene's
+// first; the exposure follows it with a time constant of kExposureAdaptation seconds.
+constexpr float kExposureInterval = 0.25f;
+constexpr float kExposureAdaptation = 0.4f;
+
+void Viewer::measureExposure(float seconds) {
+    secondsSinceExposureMeasure_ += seconds;
+    if (!state_.autoExposure || !exposureStale_) return;
+    if (exposureMeasured_ && secondsSinceExposureMeasure_ < kExposureInterval) return;
+    const DebugView view = renderer_->settings().shading.debugView;
+    if (view != DebugView::None) return;  // the debug views hold colours or other quantities
+    targetExposure_ = automaticExposure(renderer_->readImage());
+    if (!exposureMeasured_) state_.exposure = targetExposure_;  // the first image starts exposed
+    exposureMeasured_ = true;
+    exposureStale_ = false;
+    secondsSinceExposureMeasure_ = 0.0f;
+}
+
+void Viewer::adaptExposure(float seconds) {
+    if (!state_.autoExposure) {
+        state_.exposure = exposureFromStops(state_.exposureStops);
+        exposureMeasured_ = false;
+        return;
+    }
+    if (!exposureMeasured_) return;
+    // In stops, so that brightening and darkening take the same time.
+    const float blend = 1.0f - std::exp(-seconds / kExposureAdaptation);
+    state_.exposure *= std::exp2(blend * std::log2(targetExposure_ / state_.exposure));
+    state_.exposureStops = std::log2(state_.exposure);
+}
+
 // One pass of the main loop; false when the viewer should stop.
 bool Viewer::loopIteration() {
     input_.beginFrame();
@@ -752,10 +796,13 @@ bool Viewer::loopIteration() {
         imageStale_ = false;
         state_.history.add(wallSeconds * 1000.0f, stats);
         if (options_.verbose) printFrameStats(stats);
+        exposureStale_ = true;
     } else {
         state_.history.add(wallSeconds * 1000.0f, FrameStats{});  // an empty plan: the image is reused
     }
 
+    measureExposure(seconds);
+    adaptExposure(seconds);
     const bool scriptedEnd = options_.frames > 0 && framesDrawn_ + 1 == options_.frames;
     std::string screenshot;
     bool withUi = state_.showPanels || state_.showGuide;

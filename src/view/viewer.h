@@ -26,7 +26,7 @@ struct ViewerOptions {
     std::optional<RenderSettings> softwareSettings;
     ContextOptions context;
     double gpuTimeoutSeconds = 120.0;
-    float exposure = 1.0f;
+    std::optional<float> exposureStops;  // a fixed exposure (EV); none: automatic
     bool vsync = true;
     bool showHint = true;  // the status bar's one-line hint to the guide (F1)
     bool verbose = false;  // a line a frame on stdout: the passes it ran and skipped

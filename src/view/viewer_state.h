@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/display_transform.h"
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "view/controls.h"
@@ -33,7 +34,10 @@ struct ViewerState {
     // Wanted settings; width and height follow the window. New resources (voxels, shadow maps)
     // take a new Renderer, new image settings a resize, shading settings nothing.
     RenderSettings settings;
-    float exposure = 1.0f;
+    float exposure = 1.0f;       // the radiance multiplier the present pass applies now
+    bool autoExposure = true;    // adapt `exposure` to the image (display_transform.h), else 2^exposureStops
+    float exposureStops = 0.0f;  // the fixed exposure, EV
+    ToneCurve toneCurve = ToneCurve::PbrNeutral;
     float renderScale = 1.0f;  // renderer image size / window size
     SunControl sun;
     // The scene's lights as the scene panel edits them; the main loop hands them to the renderer
@@ -51,8 +55,8 @@ struct ViewerState {
     bool guideOpened = false;
     float statusBarHeight = 0.0f;  // last frame's, so the settings window ends above it
     float settingsWidth = 0.0f;    // this frame's docked settings, 0 when collapsed or hidden
-    bool showProfiler = true;
-    bool wasNarrow = false;  // the window was too narrow for the settings and the profiler side by side
+    bool showProfiler = false;     // one click away, in the settings' first row
+    bool wasNarrow = false;        // the window was too narrow for the settings and the profiler side by side
     bool showPanels = true;
     bool showGridBounds = false;  // the voxel grid's box as lines over the image (G)
     bool vsync = true;

@@ -99,17 +99,20 @@ protected:
 
     // Runs `vct view` in `directory` (which is its XDG_CONFIG_HOME too: the recent files go there) on a small window with 64³ voxels and one bounce (so that a
     // frame changes only what the script changed: converging bounces brighten the first frames,
-    // which View.ProgressiveBouncesSettleAndThenTheImageStays checks); returns the exit code.
+    // which View.ProgressiveBouncesSettleAndThenTheImageStays checks), each frame's passes logged
+    // (--verbose); returns the exit code.
     // `hint`: start with the status bar's one-line hint to the guide, as a user does (the tests
     // otherwise pass --no-guide, so that screenshots with the panels show only what they test).
-    int runViewer(const std::string& arguments, bool hint = false) {
+    // `autoExposure`: as a user starts it; the tests otherwise fix the exposure (--exposure 0, the
+    // radiance as it is), so that a change of light shows as a change of brightness.
+    int runViewer(const std::string& arguments, bool hint = false, bool autoExposure = false) {
         const fs::path logPath = directory / "log.txt";
-        const std::string command = "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp XDG_CONFIG_HOME='" +
-                                    directory.string() +
-                                    "' " XVFB_RUN " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
-                                    std::string(hint ? "" : "--no-guide ") +
-                                    "--voxels 64 --shadow-map 512 --bounces 1 --width 320 --height 180 " + arguments +
-                                    " > '" + logPath.string() + "' 2>&1";
+        const std::string command =
+            "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp XDG_CONFIG_HOME='" + directory.string() +
+            "' " XVFB_RUN " -a -s '-screen 0 1024x768x24' " VCT_EXECUTABLE " view --validate " +
+            (autoExposure ? "" : "--verbose ") + std::string(hint ? "" : "--no-guide ") +
+            "--voxels 64 --shadow-map 512 --bounces 1 --width 320 --height 180 " +
+            (autoExposure ? "" : "--exposure 0 ") + arguments + " > '" + logPath.string() + "' 2>&1";
         const int status = std::system(command.c_str());
         std::ifstream logFile(logPath);
         std::ostringstream text;
@@ -140,13 +143,13 @@ TEST_F(View, StartsRendersAndSavesAScreenshotOfTheWindowSize) {
 TEST_F(View, ScreenshotWithTheUiShowsThePanels) {
     ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot plain.png --frames 2"), 0) << log;
     ASSERT_EQ(runViewer("--width 640 --height 360 --screenshot ui.png --frames 2 --screenshot-ui"), 0) << log;
-    // Without the UI, the image alone: what is right of the settings (370 px). With it, the window,
+    // Without the UI, the image alone: what is right of the settings (300 px). With it, the window,
     // whose left holds the settings and whose right the same image.
     const Png plain = screenshot("plain.png"), ui = screenshot("ui.png");
-    EXPECT_EQ(plain.width, 640 - 370) << log;
+    EXPECT_EQ(plain.width, 640 - 300) << log;
     EXPECT_EQ(ui.width, 640);
-    EXPECT_LT(changedFraction(crop(plain, 0, 0, 270, 300), crop(ui, 370, 0, 640, 300)), 0.001);
-    EXPECT_GT(changedFraction(crop(plain, 0, 0, 270, 300), crop(ui, 0, 0, 270, 300)), 0.2);
+    EXPECT_LT(changedFraction(crop(plain, 0, 0, 340, 300), crop(ui, 300, 0, 640, 300)), 0.001);
+    EXPECT_GT(changedFraction(crop(plain, 0, 0, 300, 300), crop(ui, 0, 0, 300, 300)), 0.2);
 }
 
 TEST_F(View, FlyingAndLookingMoveTheCamera) {
@@ -162,7 +165,7 @@ TEST_F(View, ProgressiveBouncesSettleAndThenTheImageStays) {
     // The viewer's own bounces: one per frame until the light converges (a few frames at 64³),
     // then frames reuse the image. The later --bounces wins over the one runViewer passes.
     const std::string events =
-        std::string(hidePanels) + "1 screenshot first.png; 30 screenshot settled.png; 32 screenshot still.png; 33 quit";
+        std::string(hidePanels) + "1 screenshot first.png; 60 screenshot settled.png; 62 screenshot still.png; 63 quit";
     ASSERT_EQ(runViewer("--bounces converged --events '" + events + "'"), 0) << log;
     EXPECT_GT(changedFraction(screenshot("first.png"), screenshot("settled.png")), 0.05) << "later bounces add light";
     EXPECT_LT(changedFraction(screenshot("settled.png"), screenshot("still.png")), 0.001) << "settled";
@@ -299,7 +302,7 @@ TEST_F(View, BracketKeysFromAScriptStepThroughTheVoxelMips) {
 }
 
 TEST_F(View, TheCameraIgnoresTheMouseOverTheSettings) {
-    // 640×360: the settings are docked on the left (370 px wide). A right-button drag over them
+    // 640×360: the settings are docked on the left (300 px wide). A right-button drag over them
     // leaves the image as it was; the same drag over the image turns the camera.
     const std::string events =
         "1 screenshot before.png; 2 mouse 100 200; 3 button right down; 4 mouse 200 150; 5 mouse 250 120;"
@@ -311,18 +314,18 @@ TEST_F(View, TheCameraIgnoresTheMouseOverTheSettings) {
 }
 
 TEST_F(View, StartsWithAHintNotTheGuideAndF1OpensTheGuide) {
-    // Beside the docked settings (x < 370) and above the status bar, the image is uncovered at
+    // Beside the docked settings (x < 300) and above the status bar, the image is uncovered at
     // start: the panels' screenshot equals the plain one there. F1 covers it with the guide.
     const std::string events =
         "2 screenshot plain.png; 3 screenshot panels.png ui; 4 key F1 press; 5 screenshot guide.png ui; 6 quit";
     ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'", true), 0) << log;
-    const Png plain = crop(screenshot("plain.png"), 30, 60, 250, 280);  // the image alone, from x = 370
+    const Png plain = crop(screenshot("plain.png"), 30, 60, 250, 280);  // the image alone, from x = 300
     ASSERT_FALSE(plain.rgb.empty()) << log;
-    EXPECT_LT(changedFraction(plain, crop(screenshot("panels.png"), 400, 60, 620, 280)), 0.001) << log;
-    EXPECT_GT(changedFraction(plain, crop(screenshot("guide.png"), 400, 60, 620, 280)), 0.3) << log;
+    EXPECT_LT(changedFraction(plain, crop(screenshot("panels.png"), 330, 60, 550, 280)), 0.001) << log;
+    EXPECT_GT(changedFraction(plain, crop(screenshot("guide.png"), 330, 60, 550, 280)), 0.3) << log;
     // The hint is a line at the bottom, over the image.
     EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 30, 340, 270, 360),
-                              crop(screenshot("panels.png"), 400, 340, 640, 360)),
+                              crop(screenshot("panels.png"), 330, 340, 570, 360)),
               0.05)
         << log;
 }
@@ -336,7 +339,7 @@ TEST_F(View, TheSettingsAreOpaque) {
     const Png before = screenshot("before.png"), after = screenshot("after.png");
     EXPECT_GT(changedFraction(crop(before, 400, 60, 620, 280), crop(after, 400, 60, 620, 280)), 0.05) << log;
     // (Left of the scroll bar and above the status bar, which "saved before.png" grows.)
-    EXPECT_LT(changedFraction(crop(before, 0, 40, 340, 300), crop(after, 0, 40, 340, 300)), 0.001) << log;
+    EXPECT_LT(changedFraction(crop(before, 0, 40, 270, 300), crop(after, 0, 40, 270, 300)), 0.001) << log;
 }
 
 TEST_F(View, SceneWarningsAreShownInTheWindow) {
@@ -386,13 +389,13 @@ TEST_F(View, AFileLitOnlyByADimGlowGetsTheDefaultSunAndSkyAsRenderDoes) {
 
 TEST_F(View, DimmingALightInTheScenePanelRerunsOnlyTheLightPasses) {
     // 640×360, the Cornell box: light 0 is its point light, light 1 the viewer's sun. A click opens
-    // light 0's node in the Lights section; a drag to the left across its intensity field takes the
+    // light 0's node in the Lights section (a click on its header opens it first); a drag to the left across its intensity field takes the
     // intensity to 0 (the field clamps there). The box gets darker, and as when the arrow keys move
     // the sun, the light is re-injected while the voxels stay.
     const std::string events =
-        "2 screenshot before.png; 3 mouse 100 105; 4 button left down; 5 button left up; 6 mouse 210 123;"
-        "7 button left down; 8 mouse 5 123; 9 button left up; 10 screenshot panel.png ui; 11 screenshot after.png;"
-        "12 quit";
+        "1 mouse 50 82; 2 button left down; 3 button left up; 4 screenshot before.png; 5 mouse 100 105;"
+        "6 button left down; 7 button left up; 8 mouse 120 123; 9 button left down; 10 mouse 5 123;"
+        "11 button left up; 12 screenshot panel.png ui; 13 screenshot after.png; 14 quit";
     ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
     const Png before = screenshot("before.png"), after = screenshot("after.png");  // the image alone
     ASSERT_FALSE(after.rgb.empty()) << log;
@@ -480,7 +483,7 @@ TEST_F(View, RecentFilesThatCannotBeSavedAreAWarningInTheWindow) {
         << log;
     // The warnings window is centred on the window, over the image right of the settings.
     EXPECT_GT(changedFraction(crop(screenshot("plain.png"), 10, 100, 270, 300),
-                              crop(screenshot("panels.png"), 380, 100, 640, 300)),
+                              crop(screenshot("panels.png"), 310, 100, 570, 300)),
               0.05)
         << "the warning is not shown in the window";
 }
@@ -547,7 +550,7 @@ size_t redPixels(const Png& png) {
 }
 
 TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
-    // 960×540 (the window), settings docked on the left (370 px): the image is drawn beside
+    // 960×540 (the window), settings docked on the left (300 px): the image is drawn beside
     // them, so the red wall, which they covered, shows; a screenshot without the UI is that image
     // alone (the profiler covers the top right of the window's, above y = 350). A click on
     // the title bar's arrow collapses the settings and the image takes the whole window again, as
@@ -559,10 +562,10 @@ TEST_F(View, TheImageTakesTheWindowRightOfTheOpenSettings) {
     const Png open = screenshot("open.png"), openUi = screenshot("open_ui.png");
     const Png collapsed = screenshot("collapsed.png");
     ASSERT_FALSE(collapsed.rgb.empty()) << log;
-    EXPECT_EQ(open.width, 960 - 370) << log;
-    EXPECT_LT(changedFraction(crop(open, 0, 360, 590, 480), crop(openUi, 370, 360, 960, 480)), 0.001)
+    EXPECT_EQ(open.width, 960 - 300) << log;
+    EXPECT_LT(changedFraction(crop(open, 0, 360, 660, 480), crop(openUi, 300, 360, 960, 480)), 0.001)
         << "the image is not right of the settings";
-    EXPECT_GT(redPixels(crop(openUi, 380, 0, 960, 480)), 2000u) << "the red wall is not beside the settings";
+    EXPECT_GT(redPixels(crop(openUi, 310, 0, 960, 480)), 2000u) << "the red wall is not beside the settings";
     EXPECT_GT(meanValue(crop(collapsed, 0, 30, 360, 540)), 20.0) << "collapsed settings leave the window to the image";
     EXPECT_LT(changedFraction(collapsed, screenshot("hidden.png")), 0.001) << "collapsed or hidden, the same image";
     EXPECT_NE(log.find("ran gbuffer diffuse-cones shade; skipped shadow voxelize inject mips bounce resolve"),
@@ -579,7 +582,7 @@ TEST_F(View, AFileTypedIntoTheSceneFieldOpensAndGoesToTheRecentFiles) {
     writeWhitePixel(directory / "texture.png");
     const std::string events = std::string(openSceneSection) +
                                "1 screenshot before.png; 5 mouse 150 168; 6 button left down; 7 button left up;"
-                               "8 type textured.gltf; 9 mouse 330 168; 10 button left down; 11 button left up;"
+                               "8 type textured.gltf; 9 mouse 260 168; 10 button left down; 11 button left up;"
                                "13 screenshot after.png; 14 quit";
     ASSERT_EQ(runViewer("--width 640 --height 360 --events '" + events + "'"), 0) << log;
     EXPECT_NE(log.find("loading textured.gltf\n"), std::string::npos) << log;
@@ -605,6 +608,26 @@ TEST_F(View, ARecentFileOpensWithAClickAndAMissingOneIsGreyedAndInert) {
     EXPECT_NE(log.find("loading " + kept + "\n"), std::string::npos) << log;
     EXPECT_GT(changedFraction(screenshot("before.png"), screenshot("after.png")), 0.05) << "still the Cornell box";
     EXPECT_EQ(readText(directory / "vct" / "recent"), kept + "\n" + gone + "\n") << "opened moves it first";
+}
+
+TEST_F(View, StartsMostlyImageExposedForTheScene) {
+    // 960×540, as a user starts it (automatic exposure, the hint to the guide): the image, right of
+    // the compact settings and above the one-row status bar, is at least 65 % of the window, and
+    // exposed for the scene whatever its units: the Cornell box's point light at 1 cd and at 100 cd
+    // give the same picture.
+    // (A script's frames are 1/30 s apart: by frame 60, 2 s, the exposure has followed the change.)
+    const std::string events = "60 screenshot image.png; 61 quit";
+    ASSERT_EQ(runViewer("--width 960 --height 540 --events '" + events + "'", true, true), 0) << log;
+    const Png image = screenshot("image.png");
+    ASSERT_FALSE(image.rgb.empty()) << log;
+    EXPECT_GE(double(image.width) * image.height, 0.65 * 960.0 * 540.0) << image.width << "x" << image.height;
+    const double grey = meanValue(image);
+    EXPECT_GT(grey, 70.0) << log;
+    EXPECT_LT(grey, 170.0) << log;
+    ASSERT_EQ(runViewer("--width 960 --height 540 --events '1 light 0 intensity 100; " + events + "'", true, true), 0)
+        << log;
+    EXPECT_NEAR(meanValue(screenshot("image.png")), grey, 6.0) << log;
+    EXPECT_EQ(log.find("frame 3: ran"), std::string::npos) << "a per-frame log without --verbose";
 }
 
 TEST_F(View, ABadScriptIsAnErrorNamingTheEntry) {
