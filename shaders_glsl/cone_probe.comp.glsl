@@ -18,6 +18,9 @@ layout(std430, set = 0, binding = 2) readonly buffer Probes { ConeProbe probes[]
 layout(std430, set = 0, binding = 3) writeonly buffer Results { vec4 results[]; };  // radiance, occlusion
 layout(push_constant) uniform Push { uint probeCount; };
 
+// Where a cone meets a surface, on which side (cone_tracing.glsl): the probes' volumes have no
+// normals, and every surface is met from the front.
+vec3 voxelNormalAt(ivec3 cell) { return vec3(0.0f); }
 #include "cone_tracing.glsl"
 
 void main() {

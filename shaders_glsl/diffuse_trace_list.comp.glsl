@@ -18,6 +18,8 @@ layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
 layout(push_constant) uniform Push { uint targetDownscale; };
 #include "directional_voxels.glsl"
 
+// Where a cone meets a surface, on which side (cone_tracing.glsl).
+vec3 voxelNormalAt(ivec3 cell) { return texelFetch(voxelNormal, cell, 0).xyz; }
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"
 

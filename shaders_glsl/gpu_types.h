@@ -79,6 +79,8 @@ const uint USE_AREA_LIGHTS = 128u;
 // The sky seen directly (pixels where the camera sees no surface): part of direct light, as a lamp
 // seen is, but not an emissive surface, so `--disable emission` leaves it.
 const uint SHOW_SKY = 256u;
+// Not a component: cones stop where a ray along them meets a surface (ResourceSettings::rayVisibility).
+const uint RAY_VISIBILITY = 512u;
 // The flags the voxels' light depends on (inject.comp.glsl): a change converges it again.
 const uint VOXEL_LIGHT_FLAGS = USE_SHADOWS | USE_AREA_LIGHTS;
 

@@ -46,6 +46,8 @@ layout(constant_id = 5) const bool WITH_LOCAL_SHADOWS = true;
 layout(constant_id = 6) const bool WITH_AREA_LIGHT_SPECULAR = true;
 #define AREA_LIGHT_SPECULAR_COMPILED WITH_AREA_LIGHT_SPECULAR
 
+// Where a cone meets a surface, on which side (cone_tracing.glsl).
+vec3 voxelNormalAt(ivec3 cell) { return texelFetch(voxelNormal, cell, 0).xyz; }
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"
 #include "debug_views.glsl"

@@ -102,6 +102,15 @@ std::vector<Option> makeSharedOptions() {
              s.resources.anisotropicVoxels = v.text() == "anisotropic";
          },
          [](const S& s) { return std::string(s.resources.anisotropicVoxels ? "anisotropic" : "isotropic"); }},
+        {"visibility", "mips|rays",
+         "what stops a cone: the filtered mips alone, or also a ray along it through the finest voxels "
+         "(no light through walls with voxels of their own; slower)",
+         [](const V& v, S& s) {
+             if (v.text() != "mips" && v.text() != "rays")
+                 throw Error("--visibility must be mips or rays, not '" + v.text() + "'");
+             s.resources.rayVisibility = v.text() == "rays";
+         },
+         [](const S& s) { return std::string(s.resources.rayVisibility ? "rays" : "mips"); }},
         {"bounces", "N|converged", "bounces of indirect light; converged iterates until it changes < 1 %",
          [](const V& v, S& s) {
              s.resources.bounces = v.text() == "converged" ? kConvergedBounces : v.whole(1, kMaxBouncesPerFrame);

@@ -17,12 +17,12 @@ static VkImageView mipView(const GpuImage& image, uint32_t level) {
     return image.mipViews.empty() ? image.view : image.mipViews[level];
 }
 
-void MipsPass::record(VkCommandBuffer commands, const VoxelVolumes& volumes) {
+void MipsPass::record(VkCommandBuffer commands, const VoxelVolumes& volumes, bool rayVisibility) {
     recordIsotropic(commands, volumes.radiance);
-    recordDirectional(commands, volumes);
+    recordDirectional(commands, volumes, rayVisibility);
 }
 
-void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes) {
+void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes, bool rayVisibility) {
     const GpuImage& volume = volumes.radiance;
     const std::vector<GpuImage>& directional = volumes.directional;
     if (directional.empty()) return;
@@ -44,7 +44,8 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
                 .storageImage(3, mipView(leaving, level == 0 ? 0 : level - 1))
                 .storageImage(4, mipView(leaving, level))
                 .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.layout);
-            vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(axis), &axis);
+            const uint32_t push[2] = {axis, rayVisibility ? 1u : 0u};  // mips_anisotropic.comp's Push
+            vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), push);
             // One invocation per line of texels along the axis.
             const uint32_t lines = size * size;
             vkCmdDispatch(commands, (lines + glsl::WORK_LIST_GROUP_SIZE - 1) / glsl::WORK_LIST_GROUP_SIZE, 1, 1);

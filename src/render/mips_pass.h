@@ -15,7 +15,9 @@ struct MipsPass {
     // Reads level 0 of the radiance volume and writes every coarser level, and the six directional
     // chains of anisotropic voxels (their first level one-sided, from the scene voxels' normals);
     // visible to sampling in the fragment and compute stages after.
-    void record(VkCommandBuffer commands, const VoxelVolumes& volumes);
+    // `rayVisibility`: the cones trace visibility rays (ResourceSettings::rayVisibility), and the
+    // directional chains show a surface seen from behind as black and opaque.
+    void record(VkCommandBuffer commands, const VoxelVolumes& volumes, bool rayVisibility);
 
     Pipeline pipeline;
     Pipeline directionalFromScenePipeline;  // the directional chains' first level, one-sided
@@ -23,7 +25,7 @@ struct MipsPass {
 
 private:
     void recordIsotropic(VkCommandBuffer commands, const GpuImage& volume);
-    void recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes);
+    void recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes, bool rayVisibility);
     GpuContext& context_;
 };
 

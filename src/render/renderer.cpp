@@ -226,8 +226,9 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.firstAreaLight = shadowLayout_.firstAreaLight;
     constants.shadowViewCount = uint32_t(shadowLayout_.views.size());
     const ShadingSettings& shading = settings_.shading;
-    constants.componentFlags =
-        componentFlags(effectiveComponents(shading)) | (shading.mode != RenderMode::Indirect ? glsl::SHOW_SKY : 0u);
+    constants.componentFlags = componentFlags(effectiveComponents(shading)) |
+                               (shading.mode != RenderMode::Indirect ? glsl::SHOW_SKY : 0u) |
+                               (settings_.resources.rayVisibility ? glsl::RAY_VISIBILITY : 0u);
     constants.anisotropicVoxels = settings_.resources.anisotropicVoxels ? 1u : 0u;
     constants.debugView = uint32_t(shading.debugView);
     constants.renderSize = glm::vec2(float(width), float(height));
@@ -330,7 +331,7 @@ FrameStats Renderer::renderFrame() {
                                    progressive);
             });
             run(commands, Pass::Mips, [&] {
-                mipsPass_.record(commands, *volumes_);
+                mipsPass_.record(commands, *volumes_, settings_.resources.rayVisibility);
                 if (converging && sweepEnds) recordMeanRadiance(commands);
             });
         });
@@ -356,7 +357,7 @@ FrameStats Renderer::renderFrame() {
                     injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {}, occupiedVoxels_,
                                              skipsEmptySpace());
                     injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
-                    mipsPass_.record(commands, *volumes_);
+                    mipsPass_.record(commands, *volumes_, settings_.resources.rayVisibility);
                     if (converging) recordMeanRadiance(commands);
                 });
             });

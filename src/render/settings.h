@@ -104,6 +104,11 @@ struct ResourceSettings {
     // Each cube face of an area light: their shadows are soft, tested by rays that are spread over
     // the light, so a coarser map serves (eight lights at 1024² took 200 MB).
     uint32_t areaShadowMapSize = 512;
+    // Pay for visibility: every cone stops where a ray along it meets a surface at the grid's
+    // finest level (shaders_glsl/visibility_ray.glsl), and the diffuse cones are traced as five
+    // beams each. No light passes a wall that has voxels of its own; about 2.2× a still frame and
+    // 4.6× a light change on lavapipe. Off: the cones see only the filtered mips, as Crassin et al.
+    bool rayVisibility = false;
     bool operator==(const ResourceSettings&) const = default;
 };
 

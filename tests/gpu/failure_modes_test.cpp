@@ -98,6 +98,78 @@ TEST_F(FailureModes, ATwoFacedWallLeaksLessTheThickerItIs) {
     }
 }
 
+// With ray visibility (ResourceSettings::rayVisibility) the targets of the visibility issue hold
+// for walls with voxels of their own; bounds are the targets unless named a guard.
+RenderSettings withRayVisibility(RenderSettings settings) {
+    settings.resources.rayVisibility = true;
+    settings.shading.diffuseConeAperture = 60.0f;
+    return settings;
+}
+
+TEST_F(FailureModes, WithRayVisibilityTwoFacedWallsAVoxelOrThickerLeakUnderOnePercent) {
+    // Measured 0.12 / 0.25 / 0.04 % for 1, 2 and 4 voxels (32² images, 64³); the mips alone leak
+    // 3.7 % at 2.
+    const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
+    const float voxel = bench::twoRoomVoxelSize(64);
+    for (float thicknessVoxels : {1.0f, 2.0f, 4.0f}) {
+        const bench::LeakMeasurement leak = bench::measureLightLeak(
+            gpu(), settings, bench::makeTwoRoomScene(0.0f, bench::SharedWall::TwoFaces, thicknessVoxels * voxel));
+        std::printf("[ leak, rays ] two faces %.0f voxels apart: lit room %.5f, ratio %.5f\n", thicknessVoxels,
+                    leak.litRoomLuminance, leak.leakRatio());
+        EXPECT_GT(leak.litRoomLuminance, 0.01);
+        EXPECT_LE(leak.leakRatio(), 0.01) << thicknessVoxels << " voxels thick";
+    }
+}
+
+TEST_F(FailureModes, WithRayVisibilityASheetFacingTheDarkRoomLeaksUnderTwoPercent) {
+    // A single double-sided sheet whose front faces the dark room: measured 0.03-1.2 % (the mips
+    // alone 0.4-2.6 %). Facing the lit room it still leaks 20-28 % (target 2 %): its voxels hold
+    // one radiance, the lit face's, and where the sheet meets the floor and ceiling a voxel holds
+    // the lit face and the dark room's floor together; that needs radiance per side. The regression
+    // guard for it is the bound below; the target stays 2 %.
+    const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
+    const float voxel = bench::twoRoomVoxelSize(64);
+    for (float wallX : {0.0f, voxel / 3.0f, -voxel / 2.0f}) {
+        for (bench::SharedWall wall : {bench::SharedWall::SheetFacingDarkRoom, bench::SharedWall::SheetFacingLitRoom}) {
+            const bench::LeakMeasurement leak = bench::measureLightLeak(gpu(), settings, wallX, wall);
+            std::printf("[ leak, rays ] %s wall at x = %+.4f m: lit room %.5f, ratio %.5f\n",
+                        bench::sharedWallName(wall), wallX, leak.litRoomLuminance, leak.leakRatio());
+            const bool target = wall == bench::SharedWall::SheetFacingDarkRoom;
+            EXPECT_LE(leak.leakRatio(), target ? 0.02 : 0.30) << bench::sharedWallName(wall) << " at x = " << wallX;
+        }
+    }
+}
+
+TEST_F(FailureModes, WithRayVisibilityTheFirstBounceHoldsAcrossResolutions) {
+    // The first bounce of the Cornell box at 32³-256³: measured within 3.5 % of each other (the
+    // mips alone 8 %): the drift came from coarse texels reaching through and around surfaces.
+    // Targets: 5 % over 64³-256³, 10 % over 32³-256³. (Against its path-traced truth it reads
+    // 1.06-1.10, docs/experiments.md.)
+    const Scene scene = loadScene("cornell");
+    RenderSettings settings = withRayVisibility(smallSettings(32, 32));
+    settings.image.supersample = 2;
+    settings.shading.mode = RenderMode::Indirect;
+    settings.resources.bounces = 1;
+    const std::vector<bench::ResolutionLuminance> results =
+        bench::measureResolutionDrift(gpu(), scene, settings, {32, 64, 128, 256});
+    auto spreadFrom = [&](size_t first) {
+        double lowest = 1e30, highest = 0.0, sum = 0.0;
+        for (size_t i = first; i < results.size(); ++i) {
+            lowest = std::min(lowest, results[i].meanLuminance);
+            highest = std::max(highest, results[i].meanLuminance);
+            sum += results[i].meanLuminance;
+        }
+        return (highest - lowest) / (sum / double(results.size() - first));
+    };
+    for (const bench::ResolutionLuminance& result : results) {
+        std::printf("[ drift, rays ] %3u³: %.4f\n", result.voxelResolution, result.meanLuminance);
+        EXPECT_TRUE(result.finite) << result.voxelResolution;
+    }
+    std::printf("[ drift, rays ] spread 32³-256³ %.3f, 64³-256³ %.3f\n", spreadFrom(0), spreadFrom(1));
+    EXPECT_LE(spreadFrom(0), 0.10);
+    EXPECT_LE(spreadFrom(1), 0.05);
+}
+
 TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTracer) {
     // The first bounce against its own truth (paths cut after one bounce): the later bounces repeat
     // its error, and `vct bench` measures the converged light's drift at its preset.
