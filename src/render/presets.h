@@ -12,8 +12,8 @@
 
 namespace vct {
 
-// fast, balanced, quality: from cheapest to closest to the path-traced reference; then classic,
-// the seed's cone set, off the front.
+// fast, balanced, quality: from cheapest to closest to the path-traced reference; walls, balanced
+// with ray visibility; then classic, the seed's cone set, off the front.
 std::vector<std::pair<std::string, RenderSettings>> renderPresets();
 
 // The preset `vct render` and `vct bench`'s defaults start from when none is named: the most
