@@ -103,6 +103,7 @@ int runView(const std::vector<std::string>& rawArguments) {
     options.vsync = !arguments.has("no-vsync");
     options.showHint = !arguments.has("no-guide");
     options.verbose = arguments.has("verbose");
+    options.presetName = arguments.has("preset") ? arguments.text("preset", "") : "custom";
     options.renderEveryFrame = arguments.has("render-every-frame");
     // 0 = not given: the viewer picks 1, or 0.5 on a software rasterizer.
     options.renderScale = arguments.number("render-scale", 0.0f, 0.25f, 1.0f);

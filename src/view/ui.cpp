@@ -188,20 +188,22 @@ static void resolutionSection(ViewerState& state) {
     ImGui::SliderInt("supersample", &supersample, 1, 4);
     settings.image.supersample = uint32_t(supersample);
     ImGui::Checkbox("anisotropic voxels", &settings.resources.anisotropicVoxels);
+    ImGui::Checkbox("ray visibility", &settings.resources.rayVisibility);
     // 0 = converged (one bounce per frame until the light settles), else that many bounces.
     int bounces = int(settings.resources.bounces);
     ImGui::SliderInt("bounces", &bounces, 0, 8, bounces == 0 ? "converged" : "%d");
     settings.resources.bounces = uint32_t(std::clamp(bounces, 0, 8));
 }
 
+// One row: the preset last chosen; choosing one brings its quality settings.
 static void presetRow(ViewerState& state) {
-    bool first = true;
+    if (!ImGui::BeginCombo("preset", state.presetName.c_str())) {
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("vct render --help says what each costs and how accurate it is");
+        return;
+    }
     for (const auto& [name, preset] : renderPresets()) {
-        const bool clicked = flowingButton(name.c_str(), first);
-        first = false;
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("the %s preset (vct render --help says what each costs)", name.c_str());
-        if (!clicked) continue;
+        if (!ImGui::Selectable(name.c_str(), name == state.presetName)) continue;
+        state.presetName = name;
         // A preset brings its quality settings; the view (mode, toggles, debug view) stays.
         RenderSettings applied = preset;
         applied.image.width = state.settings.image.width;
@@ -212,6 +214,7 @@ static void presetRow(ViewerState& state) {
         applied.shading.debugVoxelMip = 0;
         state.settings = applied;
     }
+    ImGui::EndCombo();
 }
 
 void drawSettingsWindow(ViewerState& state, const UiFacts& facts) {

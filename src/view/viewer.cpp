@@ -160,6 +160,7 @@ Viewer::Viewer(ViewerOptions options)
     const bool software = context_->isSoftwareRasterizer();
     const bool softwarePreset = software && options_.softwareSettings.has_value();
     state_.settings = softwarePreset ? *options_.softwareSettings : options_.settings;
+    state_.presetName = softwarePreset ? "fast" : options_.presetName;
     if (softwarePreset)
         state_.notice = "a software rasterizer (" + context_->deviceName() +
                         "): started on the fast preset at render scale 0.5, about 15 fps at 960x540; change them above";

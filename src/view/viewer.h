@@ -28,8 +28,9 @@ struct ViewerOptions {
     double gpuTimeoutSeconds = 120.0;
     std::optional<float> exposureStops;  // a fixed exposure (EV); none: automatic
     bool vsync = true;
-    bool showHint = true;  // the status bar's one-line hint to the guide (F1)
-    bool verbose = false;  // a line a frame on stdout: the passes it ran and skipped
+    bool showHint = true;               // the status bar's one-line hint to the guide (F1)
+    std::string presetName = "custom";  // --preset's, shown in the panel
+    bool verbose = false;               // a line a frame on stdout: the passes it ran and skipped
     // Scripted use: save the image shown on frame `frames` to `screenshotPath` and exit
     // (frames = 0: run until the window closes).
     std::string screenshotPath;

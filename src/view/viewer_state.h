@@ -34,9 +34,10 @@ struct ViewerState {
     // Wanted settings; width and height follow the window. New resources (voxels, shadow maps)
     // take a new Renderer, new image settings a resize, shading settings nothing.
     RenderSettings settings;
-    float exposure = 1.0f;       // the radiance multiplier the present pass applies now
-    bool autoExposure = true;    // adapt `exposure` to the image (display_transform.h), else 2^exposureStops
-    float exposureStops = 0.0f;  // the fixed exposure, EV
+    std::string presetName = "custom";  // the preset the settings came from, as the panel shows it
+    float exposure = 1.0f;              // the radiance multiplier the present pass applies now
+    bool autoExposure = true;           // adapt `exposure` to the image (display_transform.h), else 2^exposureStops
+    float exposureStops = 0.0f;         // the fixed exposure, EV
     ToneCurve toneCurve = ToneCurve::PbrNeutral;
     float renderScale = 1.0f;  // renderer image size / window size
     SunControl sun;
