@@ -6,6 +6,7 @@
 
 #include "render/renderer.h"
 #include "render/voxel_grid_fit.h"
+#include "scene/load.h"
 
 namespace vct::bench {
 
@@ -114,6 +115,29 @@ Scene makeTwoRoomScene(float wallX, SharedWall wall, float thickness) {
     light.position = glm::vec3(-0.5f, 0.6f, 0.5f);
     scene.lights.push_back(light);
     scene.cameras.push_back(darkRoomCamera());
+    return scene;
+}
+
+Scene makeSunRoomInASunlitShell(float gap) {
+    Scene scene = loadScene("sun-room");
+    scene.name = "sun room in a sunlit shell";
+    const uint32_t white = uint32_t(scene.materials.size());
+    scene.materials.push_back(lambertianWhite(0.725f));
+    const float lo = -gap, hi = 4.0f + gap, bottom = -gap, top = 3.0f + gap;
+    // The shell faces out, as a building's outer walls do; the sun lights its roof and two walls.
+    addQuad(scene, {{{lo, bottom, lo}, {lo, top, lo}, {lo, top, hi}, {lo, bottom, hi}}}, {-1, 0, 0}, white);
+    addQuad(scene, {{{hi, bottom, lo}, {hi, top, lo}, {hi, top, hi}, {hi, bottom, hi}}}, {1, 0, 0}, white);
+    addQuad(scene, {{{lo, bottom, lo}, {hi, bottom, lo}, {hi, top, lo}, {lo, top, lo}}}, {0, 0, -1}, white);
+    addQuad(scene, {{{lo, bottom, hi}, {hi, bottom, hi}, {hi, top, hi}, {lo, top, hi}}}, {0, 0, 1}, white);
+    addQuad(scene, {{{lo, bottom, lo}, {hi, bottom, lo}, {hi, bottom, hi}, {lo, bottom, hi}}}, {0, -1, 0}, white);
+    // Its roof's hole lies where the sun's beam through the room's hole (x, z 1.5-2.5) crosses the
+    // shell's roof: the sun travels (0.35, −1, 0.25), so the same light enters the room.
+    const float x0 = 1.5f - 0.35f * gap, x1 = 2.5f - 0.35f * gap, z0 = 1.5f - 0.25f * gap, z1 = 2.5f - 0.25f * gap;
+    const glm::vec3 up(0, 1, 0);
+    addQuad(scene, {{{lo, top, lo}, {hi, top, lo}, {hi, top, z0}, {lo, top, z0}}}, up, white);
+    addQuad(scene, {{{lo, top, z1}, {hi, top, z1}, {hi, top, hi}, {lo, top, hi}}}, up, white);
+    addQuad(scene, {{{lo, top, z0}, {x0, top, z0}, {x0, top, z1}, {lo, top, z1}}}, up, white);
+    addQuad(scene, {{{x1, top, z0}, {hi, top, z0}, {hi, top, z1}, {x1, top, z1}}}, up, white);
     return scene;
 }
 

@@ -54,6 +54,13 @@ struct LeakMeasurement {
 LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, float wallX, SharedWall wall);
 LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& settings, const Scene& twoRooms);
 
+// ---- A room inside a sunlit shell: the built-in sun room, whose walls and roof are single sheets,
+// inside an outer shell `gap` metres out whose roof has a hole where the sun's beam through the
+// room's own hole crosses it. The shell changes nothing inside the room (the same sunlight comes
+// in), so the sun room's path-traced references are its truth; what its sunlit outside adds to the
+// room's light leaked through the sheets.
+Scene makeSunRoomInASunlitShell(float gap);
+
 // ---- Self-illumination: a lone 2 m square lit by a sun 45° up, and nothing else. No light can
 // reach it twice, so its true indirect light is 0: whatever indirect light it gets, it gathered from
 // its own voxels.
