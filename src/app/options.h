@@ -37,10 +37,10 @@ const std::vector<Option>& sharedOptions();
 // The shared row called `name` (an unknown name is a programming error: std::out_of_range).
 const Option& sharedOption(const std::string& name);
 
-// "vct 0.1.0": CMake's project version.
 // The presets, one line each: what each is, its cost and its error (render --help).
 std::string presetsHelp();
 
+// "vct 0.1.0": CMake's project version.
 std::string versionText();
 
 // Every command takes --help (or -h) and --version besides its options.

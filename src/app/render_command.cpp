@@ -92,7 +92,7 @@ int runRender(const std::vector<std::string>& rawArguments) {
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width, image.height,
                 renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());
-    if (outPath.size() < 4 || outPath.substr(outPath.size() - 4) != ".pfm")
+    if (!endsWithIgnoringCase(outPath, ".pfm"))
         std::printf("  exposure %+.2f EV (%s), %s tone curve\n", std::log2(display.exposure),
                     fixedExposure ? "fixed" : "automatic", toneCurveName(display.curve));
     if (!context.validationMessages().empty()) throw Error("the validation layer reported problems (see above)");

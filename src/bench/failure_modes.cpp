@@ -13,8 +13,7 @@ namespace vct::bench {
 double meanLuminance(const Image& image) {
     double sum = 0.0;
     const size_t pixels = size_t(image.width) * image.height;
-    for (size_t i = 0; i < pixels; ++i)
-        sum += 0.2126 * image.rgb[i * 3] + 0.7152 * image.rgb[i * 3 + 1] + 0.0722 * image.rgb[i * 3 + 2];
+    for (size_t i = 0; i < pixels; ++i) sum += luminance(&image.rgb[i * 3]);
     return pixels > 0 ? sum / double(pixels) : 0.0;
 }
 

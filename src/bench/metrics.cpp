@@ -18,8 +18,6 @@ void requireSameSize(const Image& a, const Image& b, const char* what) {
 
 }  // namespace
 
-double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
-
 ImageError compareImages(const Image& image, const Image& reference, const MetricTolerances& tolerances) {
     requireSameSize(image, reference, "comparing with the reference");
     ImageError error;

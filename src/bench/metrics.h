@@ -30,9 +30,6 @@ struct ImageError {
     double shareOff = 0.0;        // share of pixels off by more than the tolerance, 0..1
 };
 
-// Rec. 709 luminance of a linear RGB pixel.
-double luminance(const float* rgb);
-
 // Throws vct::Error when the sizes differ. A reference that is black everywhere gives a luminance
 // ratio of 1 when the image is black too, and infinity otherwise.
 ImageError compareImages(const Image& image, const Image& reference, const MetricTolerances& tolerances = {});

@@ -16,9 +16,9 @@ float automaticExposure(const Image& image) {
     double logSum = 0.0;
     size_t lit = 0;
     for (size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
-        const float luminance = 0.2126f * image.rgb[i] + 0.7152f * image.rgb[i + 1] + 0.0722f * image.rgb[i + 2];
-        if (!(luminance > 0.0f) || !std::isfinite(luminance)) continue;
-        logSum += std::log(double(luminance));
+        const double pixel = luminance(&image.rgb[i]);
+        if (!(pixel > 0.0) || !std::isfinite(pixel)) continue;
+        logSum += std::log(pixel);
         ++lit;
     }
     if (lit == 0) return 1.0f;

@@ -13,6 +13,7 @@
 
 #include "error.h"
 #include "io/display_transform.h"
+#include "io/output_paths.h"
 #include "io/temporary_files.h"
 
 namespace vct {
@@ -76,13 +77,8 @@ void writeImage(const std::string& path, const Image& image, const DisplayTransf
     if (nonFinite > 0)
         throw Error("not writing '" + path + "': the image holds " + std::to_string(nonFinite) +
                     " values that are not finite numbers (NaN or infinity)");
-    auto endsWith = [&](const char* suffix) {
-        const size_t n = std::strlen(suffix);
-        return path.size() >= n && std::equal(path.end() - long(n), path.end(), suffix,
-                                              [](char a, char b) { return std::tolower(a) == b; });
-    };
-    if (endsWith(".pfm")) return writePfm(path, image);
-    if (endsWith(".png")) return writePng(path, image, display);
+    if (endsWithIgnoringCase(path, ".pfm")) return writePfm(path, image);
+    if (endsWithIgnoringCase(path, ".png")) return writePng(path, image, display);
     throw Error("cannot write '" + path + "': the output must end in .pfm or .png");
 }
 

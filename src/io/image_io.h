@@ -20,6 +20,9 @@ struct Image {
     const float* pixel(uint32_t x, uint32_t y) const { return &rgb[(size_t(y) * width + x) * 3]; }
 };
 
+// Rec. 709 luminance of the pixel at `rgb`.
+inline double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+
 // Writes standard PFM: "PF", little-endian (scale −1), rows bottom-to-top.
 void writePfm(const std::string& path, const Image& image);
 Image readPfm(const std::string& path);

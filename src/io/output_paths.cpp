@@ -13,12 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool endsWithIgnoringCase(const std::string& text, const std::string& suffix) {
-    return text.size() >= suffix.size() &&
-           std::equal(suffix.begin(), suffix.end(), text.end() - long(suffix.size()),
-                      [](char a, char b) { return std::tolower(uint8_t(a)) == std::tolower(uint8_t(b)); });
-}
-
 std::string extensionList(const std::vector<std::string>& extensions) {
     std::string list;
     for (size_t i = 0; i < extensions.size(); ++i)
@@ -31,6 +25,12 @@ std::string extensionList(const std::vector<std::string>& extensions) {
 bool mayWriteInto(const fs::path& folder) { return access(folder.c_str(), W_OK | X_OK) == 0; }
 
 }  // namespace
+
+bool endsWithIgnoringCase(const std::string& text, const std::string& suffix) {
+    return text.size() >= suffix.size() &&
+           std::equal(suffix.begin(), suffix.end(), text.end() - long(suffix.size()),
+                      [](char a, char b) { return std::tolower(uint8_t(a)) == std::tolower(uint8_t(b)); });
+}
 
 void checkOutputFile(const std::string& path, const std::vector<std::string>& extensions) {
     const std::string refusal = "cannot write '" + path + "': ";

@@ -7,6 +7,9 @@
 
 namespace vct {
 
+// Whether `text` ends in `suffix` (".png"), compared without case.
+bool endsWithIgnoringCase(const std::string& text, const std::string& suffix);
+
 // Throws vct::Error ("cannot write 'PATH': ...") unless `path` ends in one of `extensions`
 // (".png", compared without case), is not a folder, and lies in a folder that exists and that
 // this process may write into.
