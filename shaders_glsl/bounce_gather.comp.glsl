@@ -35,18 +35,38 @@ vec3 voxelNormalAt(ivec3 cell) { return imageLoad(voxelNormal, cell).xyz; }
 // (32³: 61 -> 160 ms on lavapipe); a still frame traces the image's own cones.
 const uint MIN_BOUNCE_CONES = 6u;
 
+// A voxel's cones start this many voxels out along its normal, past the voxel itself.
+const float BOUNCE_CONE_START = 2.0f;
+
+// With ray visibility, whether the voxel's cones start in the free space on its own side: where
+// they start, and the way there, hold no other surface. A voxel where a sheet
+// meets the floor of the room behind it has a normal halfway between theirs, and two voxels along
+// it lie beyond the sheet: its cones gathered the light of the room on the sheet's lit side, and the
+// dark room saw that light on its floor along the sheet (on a voxel boundary, most of what such a
+// sheet let through: docs/experiments.md, 2026-12-07). Where the sheet crosses the voxel itself,
+// the mean normal cannot tell the sides apart.
+bool coneStartIsClear(ivec3 voxel, vec3 normal) {
+    if ((frame.componentFlags & RAY_VISIBILITY) == 0u) return true;
+    vec3 center = vec3(voxel) + 0.5f;
+    for (float along = 1.0f; along <= BOUNCE_CONE_START; along += 0.5f) {
+        ivec3 cell = ivec3(floor(center + normal * along));
+        if (cell != voxel && occupiedAt(cell, 0)) return false;
+    }
+    return true;
+}
+
 void gatherVoxel(ivec3 voxel) {
     vec3 normalSum = imageLoad(voxelNormal, voxel).xyz;
     float normalLength = length(normalSum);
     vec3 reflected = vec3(0.0f);
     // A voxel whose triangles disagree (a thin two-sided wall, a corner) has no side to gather
     // from; it keeps the light sources' light alone.
-    if (normalLength > 0.25f) {
-        vec3 normal = normalSum / normalLength;
+    vec3 normal = normalSum / max(normalLength, 1e-6f);
+    if (normalLength > 0.25f && coneStartIsClear(voxel, normal)) {
         vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
         float voxelSize = frame.grid.originVoxelSize.w;
-        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). Cones start two voxels out, past the voxel itself.
-        vec3 gathered = traceDiffuseConeSet(center + normal * (2.0f * voxelSize), normal, 2.0f,
+        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ).
+        vec3 gathered = traceDiffuseConeSet(center + normal * (BOUNCE_CONE_START * voxelSize), normal, BOUNCE_CONE_START,
                                             max(frame.diffuseConeCount, MIN_BOUNCE_CONES))
                             .rgb;
         reflected = imageLoad(voxelAlbedo, voxel).rgb * gathered * frame.radianceScale;
