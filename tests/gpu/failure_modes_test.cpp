@@ -107,7 +107,7 @@ RenderSettings withRayVisibility(RenderSettings settings) {
 }
 
 TEST_F(FailureModes, WithRayVisibilityTwoFacedWallsAVoxelOrThickerLeakUnderOnePercent) {
-    // Measured 0.12 / 0.25 / 0.04 % for 1, 2 and 4 voxels (32² images, 64³); the mips alone leak
+    // Measured 0.06 / 0.19 / 0.004 % for 1, 2 and 4 voxels (32² images, 64³); the mips alone leak
     // 3.7 % at 2.
     const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
     const float voxel = bench::twoRoomVoxelSize(64);
@@ -122,26 +122,46 @@ TEST_F(FailureModes, WithRayVisibilityTwoFacedWallsAVoxelOrThickerLeakUnderOnePe
 }
 
 TEST_F(FailureModes, WithRayVisibilityASheetFacingTheDarkRoomLeaksUnderTwoPercent) {
-    // A single double-sided sheet whose front faces the dark room: measured 0.03-1.2 % (the mips
-    // alone 0.4-2.6 %). Facing the lit room it still leaks 20-28 % (target 2 %): its voxels hold
-    // one radiance, the lit face's, and where the sheet meets the floor and ceiling a voxel holds
-    // the lit face and the dark room's floor together; that needs radiance per side. The regression
-    // guard for it is the bound below; the target stays 2 %.
+    // A single double-sided sheet whose front faces the dark room: measured 0.01-1.1 % (the mips
+    // alone 0.4-2.6 %).
     const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
     const float voxel = bench::twoRoomVoxelSize(64);
     for (float wallX : {0.0f, voxel / 3.0f, -voxel / 2.0f}) {
-        for (bench::SharedWall wall : {bench::SharedWall::SheetFacingDarkRoom, bench::SharedWall::SheetFacingLitRoom}) {
-            const bench::LeakMeasurement leak = bench::measureLightLeak(gpu(), settings, wallX, wall);
-            std::printf("[ leak, rays ] %s wall at x = %+.4f m: lit room %.5f, ratio %.5f\n",
-                        bench::sharedWallName(wall), wallX, leak.litRoomLuminance, leak.leakRatio());
-            const bool target = wall == bench::SharedWall::SheetFacingDarkRoom;
-            EXPECT_LE(leak.leakRatio(), target ? 0.02 : 0.30) << bench::sharedWallName(wall) << " at x = " << wallX;
-        }
+        const bench::LeakMeasurement leak =
+            bench::measureLightLeak(gpu(), settings, wallX, bench::SharedWall::SheetFacingDarkRoom);
+        std::printf("[ leak, rays ] sheet facing the dark room at x = %+.4f m: lit room %.5f, ratio %.5f\n", wallX,
+                    leak.litRoomLuminance, leak.leakRatio());
+        EXPECT_GT(leak.litRoomLuminance, 0.01);
+        EXPECT_LE(leak.leakRatio(), 0.02) << "wall at x = " << wallX;
+    }
+}
+
+TEST_F(FailureModes, WithRayVisibilityASheetFacingTheLitRoomLeaksLessThanItDid) {
+    // A single double-sided sheet whose lit front faces away from the dark room. Target: 2 %, as
+    // for the sheet facing the other way. Measured 5.8 / 18.8 / 11.5 % with the wall on a voxel
+    // boundary, a third of the way into a voxel and half way (28 / 26 / 20 % before the chains
+    // were kept off the cone's start and voxels gathered only from their own side). What is left:
+    // a voxel where the sheet meets the floor or ceiling holds the lit face and the dark floor
+    // together, with one radiance and one normal halfway between theirs (radiance per side of a
+    // voxel is the next step). The bounds are regression guards, not the target.
+    const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
+    const float voxel = bench::twoRoomVoxelSize(64);
+    const struct {
+        float wallX;
+        double guard;
+    } walls[] = {{0.0f, 0.07}, {voxel / 3.0f, 0.21}, {-voxel / 2.0f, 0.13}};
+    for (const auto& wall : walls) {
+        const bench::LeakMeasurement leak =
+            bench::measureLightLeak(gpu(), settings, wall.wallX, bench::SharedWall::SheetFacingLitRoom);
+        std::printf("[ leak, rays ] sheet facing the lit room at x = %+.4f m: lit room %.5f, ratio %.5f\n", wall.wallX,
+                    leak.litRoomLuminance, leak.leakRatio());
+        EXPECT_GT(leak.litRoomLuminance, 0.01);
+        EXPECT_LE(leak.leakRatio(), wall.guard) << "wall at x = " << wall.wallX << " (regression guard; target 0.02)";
     }
 }
 
 TEST_F(FailureModes, WithRayVisibilityTheFirstBounceHoldsAcrossResolutions) {
-    // The first bounce of the Cornell box at 32³-256³: measured within 3.5 % of each other (the
+    // The first bounce of the Cornell box at 32³-256³: measured within 3.9 % of each other (64³-256³ 3.8 %) (the
     // mips alone 8 %): the drift came from coarse texels reaching through and around surfaces.
     // Targets: 5 % over 64³-256³, 10 % over 32³-256³. (Against its path-traced truth it reads
     // 1.06-1.10, docs/experiments.md.)
@@ -173,9 +193,9 @@ TEST_F(FailureModes, WithRayVisibilityTheFirstBounceHoldsAcrossResolutions) {
 TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
     // The sun room inside a shell 25 cm out (128², its camera, indirect light, against the sun
     // room's path-traced reference; target 0.90-1.10 of it). Measured: balanced 2.92 (the mips let
-    // the shell's sunlit outside in through the sheets), walls 1.38, against 0.98 and 1.22 for the
-    // sun room alone: the rays stop what crosses the sheets, not the coarse samples before a hit
-    // whose texels straddle the room's wall, the gap and the shell's lit face beside the cone.
+    // the shell's sunlit outside in through the sheets), walls 1.35, against 0.98 and 1.05 for the
+    // sun room alone: the rays stop what crosses the sheets; what is left comes from the coarse
+    // samples before a hit, whose texels straddle the room's wall, the gap and the shell's lit face.
     // The bounds are regression guards; the target stays 0.90-1.10.
     const std::string references = std::string(VCT_SOURCE_DIR) + "/assets/reference/sun-room-";
     const Image truth = readPfm(references + "indirect.pfm");
@@ -202,7 +222,7 @@ TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
         std::printf("[ shell ] %s: indirect luminance %.3f x the sun room's truth\n", preset, ratio);
         const bool rays = settings.resources.rayVisibility;
         EXPECT_GE(ratio, 0.90) << preset;
-        EXPECT_LE(ratio, rays ? 1.45 : 3.1) << preset << " (regression guard; target 1.10)";
+        EXPECT_LE(ratio, rays ? 1.40 : 3.1) << preset << " (regression guard; target 1.10)";
     }
 }
 
