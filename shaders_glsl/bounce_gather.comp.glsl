@@ -39,12 +39,12 @@ const uint MIN_BOUNCE_CONES = 6u;
 const float BOUNCE_CONE_START = 2.0f;
 
 // With ray visibility, whether the voxel's cones start in the free space on its own side: where
-// they start, and the way there, hold no other surface. A voxel where a sheet
-// meets the floor of the room behind it has a normal halfway between theirs, and two voxels along
-// it lie beyond the sheet: its cones gathered the light of the room on the sheet's lit side, and the
-// dark room saw that light on its floor along the sheet (on a voxel boundary, most of what such a
-// sheet let through: docs/experiments.md, 2026-12-07). Where the sheet crosses the voxel itself,
-// the mean normal cannot tell the sides apart.
+// they start, and the way there, hold no other surface. A voxel where a sheet meets the floor of
+// the room behind it has a normal halfway between theirs, and two voxels along it lie beyond the
+// sheet: its cones gathered the light of the room on the sheet's lit side, and the dark room saw
+// that light on its floor along the sheet (on a voxel boundary, most of what such a sheet let
+// through: docs/experiments.md, 2026-12-07). Where the sheet crosses the voxel itself, the mean
+// normal cannot tell the sides apart.
 bool coneStartIsClear(ivec3 voxel, vec3 normal) {
     if ((frame.componentFlags & RAY_VISIBILITY) == 0u) return true;
     vec3 center = vec3(voxel) + 0.5f;
