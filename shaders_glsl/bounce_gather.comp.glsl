@@ -26,6 +26,7 @@ layout(push_constant) uniform Push {
 
 // Where a cone meets a surface, on which side (cone_tracing.glsl).
 vec3 voxelNormalAt(ivec3 cell) { return imageLoad(voxelNormal, cell).xyz; }
+#include "surface_planes.glsl"
 #include "cone_tracing.glsl"
 
 // A voxel gathers its bounce with at least this many cones, whatever the image's setting. One cone

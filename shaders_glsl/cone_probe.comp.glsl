@@ -21,6 +21,8 @@ layout(push_constant) uniform Push { uint probeCount; };
 // Where a cone meets a surface, on which side (cone_tracing.glsl): the probes' volumes have no
 // normals, and every surface is met from the front.
 vec3 voxelNormalAt(ivec3 cell) { return vec3(0.0f); }
+// Nor planes: no sample is told it lies behind a surface (cone_tracing.glsl).
+vec4 surfacePlaneAt(vec3 uvw, float lod) { return vec4(0.0f); }
 #include "cone_tracing.glsl"
 
 void main() {

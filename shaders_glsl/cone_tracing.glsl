@@ -2,7 +2,8 @@
 // Requires: frame (FrameConstants), voxelRadiance (sampler3D with the mip chain; rgb is
 // radiance × scale premultiplied by opacity, a is opacity) and, for anisotropic voxels, the six
 // directional chains directionalVoxels[AXIS_*] (their level 0 is the grid's level 1), and
-// voxelNormalAt(cell), the level-0 mean normal (not renormalized) where a cone meets a surface.
+// voxelNormalAt(cell), the level-0 mean normal (not renormalized) where a cone meets a surface,
+// and surfacePlaneAt(uvw, lod), the surface planes (surface_planes.h) that ray visibility reads.
 #ifndef VCT_CONE_TRACING_GLSL
 #define VCT_CONE_TRACING_GLSL
 
@@ -173,6 +174,22 @@ ChainRead chainReads(float lod, float distance, ConeSetup cone) {
     return ChainRead(level, sign(cone.direction) * ahead);
 }
 
+// With ray visibility, whether a sample lies behind the surfaces in its footprint (their planes,
+// surface_planes.h, weighted by opacity): where they mostly agree on a side (a mean normal at
+// least SIDED_AGREEMENT long; the two faces of a wall, or a block's, cancel) and the sample lies
+// more than BEHIND_MARGIN voxels behind them on average. It then sees their backs, which hold no
+// light, whatever the directional chains show to rays entering their texels from elsewhere.
+const float SIDED_AGREEMENT = 0.5f;
+const float BEHIND_MARGIN = 0.125f;
+bool behindSurfaces(vec3 uvw, float lod, vec3 position, float resolution) {
+    float weight = dot(textureLod(voxelRadiance, uvw, lod).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
+    if (!(weight > 0.0f)) return false;
+    vec4 plane = surfacePlaneAt(uvw, lod);
+    vec3 meanNormal = plane.xyz / weight;
+    float meanDistance = (dot(plane.xyz, position - 0.5f * resolution) - plane.w) / weight;
+    return length(meanNormal) >= SIDED_AGREEMENT && meanDistance < -BEHIND_MARGIN;
+}
+
 bool marching(ConeMarch march, ConeSetup cone) {
     return !march.leftGrid && march.distance <= cone.maxDistance && march.alpha < cone.stopOpacity;
 }
@@ -223,6 +240,9 @@ void marchOneStep(inout ConeMarch march, ConeSetup cone, bool blendFinest) {
     // which side it shows); the directional chains do have sides.
     bool nearHit = cone.hitDistance - distance < 1.0f;
     vec4 voxel = sampleVoxels(uvw, lod, chainReads(lod, distance, cone), cone.direction, blendFinest && !nearHit);
+    if ((frame.componentFlags & RAY_VISIBILITY) != 0u && voxel.a > 0.0f &&
+        behindSurfaces(uvw, lod, position, cone.resolution))
+        voxel.rgb = vec3(0.0f);
     if (voxel.a > 0.0f) {
         float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / exp2(lod));
         vec3 correctedColor = voxel.rgb * (correctedAlpha / voxel.a);
@@ -270,6 +290,9 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     else if (!march.leftGrid && march.distance >= cone.hitDistance) {
         vec3 hitPoint = cone.start + direction * (cone.hitDistance + 1e-3f);
         float hitLod = clamp(log2(max(1.0f, 2.0f * tanHalfAperture * cone.hitDistance)), 0.0f, cone.maxLod);
+        vec3 beforeHit = cone.start + direction * max(cone.hitDistance - 0.5f, 0.0f);
+        for (int k = 0; k < 4 && hitLod > 0.0f && behindSurfaces(hitPoint / cone.resolution, hitLod, beforeHit, cone.resolution); ++k)
+            hitLod = max(hitLod - 1.0f, 0.0f);
         vec4 hit = sampleVoxels(hitPoint / cone.resolution, hitLod, ChainRead(vec3(hitLod), vec3(0.0f)), direction, true);
         vec3 hitNormal = voxelNormalAt(ivec3(floor(hitPoint)));
         bool fromBehind = length(hitNormal) > 0.25f && dot(hitNormal, direction) > 0.1f * length(hitNormal);

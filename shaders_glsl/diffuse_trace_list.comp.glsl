@@ -20,6 +20,7 @@ layout(push_constant) uniform Push { uint targetDownscale; };
 
 // Where a cone meets a surface, on which side (cone_tracing.glsl).
 vec3 voxelNormalAt(ivec3 cell) { return texelFetch(voxelNormal, cell, 0).xyz; }
+#include "surface_planes.glsl"
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"
 

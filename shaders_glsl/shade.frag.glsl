@@ -48,6 +48,7 @@ layout(constant_id = 6) const bool WITH_AREA_LIGHT_SPECULAR = true;
 
 // Where a cone meets a surface, on which side (cone_tracing.glsl).
 vec3 voxelNormalAt(ivec3 cell) { return texelFetch(voxelNormal, cell, 0).xyz; }
+#include "surface_planes.glsl"
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"
 #include "debug_views.glsl"

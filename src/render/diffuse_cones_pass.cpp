@@ -3,6 +3,7 @@
 #include <array>
 
 #include "gpu/commands.h"
+#include "surface_planes.h"
 #include "work_list.h"
 
 namespace vct {
@@ -128,6 +129,8 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
             .sampledImage(7, gbuffer.normal.view, point)
             .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), volumeSampler,
+                          VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList.layout);
         vkCmdPushConstants(commands, traceList.layout, VK_SHADER_STAGE_ALL, 0, sizeof(targetDownscale),

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/commands.h"
+#include "surface_planes.h"
 
 namespace vct {
 
@@ -77,6 +78,7 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
         .storageImage(2, volumes.normal.view)
         .storageImage(3, volumes.gatheredLight.view)
         .sampledImage(9, volumes.radiance.view, sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), sampler, VK_IMAGE_LAYOUT_GENERAL)
         .buffer(10, volumes.occupiedVoxels.buffer)
         .buffer(11, volumes.occupiedDispatch.buffer)
         .sampledImages(12, volumes.directionalViews(), sampler, VK_IMAGE_LAYOUT_GENERAL)

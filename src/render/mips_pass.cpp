@@ -11,6 +11,7 @@ MipsPass::MipsPass(GpuContext& context)
     : pipeline(createComputePipeline(context, "mips.comp")),
       directionalFromScenePipeline(createComputePipeline(context, "mips_anisotropic.comp", {}, {1u})),
       directionalPipeline(createComputePipeline(context, "mips_anisotropic.comp", {}, {0u})),
+      surfacePlanesPipeline(createComputePipeline(context, "surface_planes.comp")),
       context_(context) {}
 
 static VkImageView mipView(const GpuImage& image, uint32_t level) {
@@ -20,6 +21,25 @@ static VkImageView mipView(const GpuImage& image, uint32_t level) {
 void MipsPass::record(VkCommandBuffer commands, const VoxelVolumes& volumes, bool rayVisibility) {
     recordIsotropic(commands, volumes.radiance);
     recordDirectional(commands, volumes, rayVisibility);
+    recordSurfacePlanes(commands, volumes);
+}
+
+void MipsPass::recordSurfacePlanes(VkCommandBuffer commands, const VoxelVolumes& volumes) {
+    const GpuImage& planes = volumes.surfacePlanes;
+    if (planes.image == VK_NULL_HANDLE) return;
+    // Radiance level 0 is read as the injection left it (the chains' passes before ended on a barrier).
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline.pipeline);
+    DescriptorPush()
+        .storageImage(0, mipView(volumes.radiance, 0))
+        .storageImage(1, volumes.normal.view)
+        .storageImage(2, mipView(planes, 0))
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline.layout);
+    const uint32_t groups = (planes.desc.extent.width + 3) / 4;
+    vkCmdDispatch(commands, groups, groups, groups);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    recordIsotropic(commands, planes);
 }
 
 void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& volumes, bool rayVisibility) {

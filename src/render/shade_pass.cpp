@@ -3,6 +3,7 @@
 #include "gpu/commands.h"
 #include "render/cone_tracing_pipeline.h"
 #include "render/ltc_table.h"
+#include "surface_planes.h"
 
 namespace vct {
 
@@ -63,6 +64,8 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), volumeSampler,
+                          VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(13, reducedDiffuse, pointSampler.sampler)
             .sampledImage(14, shadows.sunMaps.view, pointSampler.sampler)
             .sampledImage(15, shadows.localMaps.view, pointSampler.sampler)

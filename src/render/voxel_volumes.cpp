@@ -25,6 +25,7 @@ std::vector<VoxelVolumeDesc> voxelVolumeDescs(const ResourceSettings& resources)
                                  "surfaces leaving along +z and -z"})
             descs.push_back({name, VK_FORMAT_R32_UINT, 4, side / 2, mips - 1, 1, false});
     if (resources.bounces != 1) descs.push_back({"voxel gathered light", half, 8, side, 1, 1, false});
+    if (resources.rayVisibility) descs.push_back({"surface planes", half, 8, side, mips, 1, false});
     return descs;
 }
 
@@ -69,6 +70,7 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
     if (resources.anisotropicVoxels)
         for (int axis = 0; axis < 3; ++axis) leavingSurfaces.push_back(makeVolume(context, descs[next++]));
     if (resources.bounces != 1) gatheredLight = makeVolume(context, descs[next++]);
+    if (resources.rayVisibility) surfacePlanes = makeVolume(context, descs[next++]);
     occupiedVoxels = Buffer(context, occupiedListBytes(resolution),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
     // Written by the voxelizer (the count reset by a transfer), read by indirect dispatches.
@@ -105,6 +107,10 @@ std::vector<VkImageView> VoxelVolumes::directionalViews() const {
     return views;
 }
 
+VkImageView VoxelVolumes::surfacePlanesView() const {
+    return surfacePlanes.image != VK_NULL_HANDLE ? surfacePlanes.view : radiance.view;
+}
+
 std::vector<VkImageView> VoxelVolumes::lightLevelZeroViews() const {
     const VkImageView radianceLevelZero = radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0];
     return {radianceLevelZero, gatheredLight.image != VK_NULL_HANDLE ? gatheredLight.view : radianceLevelZero};
@@ -115,6 +121,7 @@ std::vector<const GpuImage*> VoxelVolumes::images() const {
     for (const GpuImage& chain : directional) all.push_back(&chain);
     for (const GpuImage& flags : leavingSurfaces) all.push_back(&flags);
     if (gatheredLight.image != VK_NULL_HANDLE) all.push_back(&gatheredLight);
+    if (surfacePlanes.image != VK_NULL_HANDLE) all.push_back(&surfacePlanes);
     return all;
 }
 

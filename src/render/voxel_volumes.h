@@ -53,6 +53,9 @@ struct VoxelVolumes {
     // RGBA16F (bounces ≠ 1): the light each voxel reflects of what its cones last gathered, scaled
     // as the radiance; the injection adds it for the next bounce.
     GpuImage gatheredLight;
+    // RGBA16F with the full mip chain, with ray visibility only: the lit surfaces' planes
+    // (shaders_glsl/surface_planes.h), which tell a cone's sample on which side of them it lies.
+    GpuImage surfacePlanes;
     Sampler sampler;  // trilinear between mips, transparent black outside the grid
     // The occupied voxels (voxel_grid.h): a uint each, room for every voxel of the grid; and their
     // count with the indirect dispatch over them (glsl::WorkListHeader).
@@ -62,6 +65,9 @@ struct VoxelVolumes {
     // The three views of the directional array binding (the isotropic volume stands in when the
     // voxels are isotropic; the shaders then never sample it).
     std::vector<VkImageView> directionalViews() const;
+    // The surface planes' view; without ray visibility the radiance volume stands in (the shaders
+    // then never sample it).
+    VkImageView surfacePlanesView() const;
     // Every image above that exists, in voxelVolumeDescs() order.
     std::vector<const GpuImage*> images() const;
     // The two level-0 images of light (radiance, then the gathered light or radiance again where

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "gpu/spirv_reflect.h"
 #include "present.h"
+#include "surface_planes.h"
 #include "voxelize.h"
 
 namespace vct {
@@ -227,8 +228,8 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
 
 TEST(SpirvReflect, BounceGatherComputeShaderHasTheBindingsItsGlslDeclares) {
     // bounce_gather.comp.glsl: frame, albedo and normal, the gathered light it writes, the radiance
-    // volume, the occupied-voxel list and its count, directional_voxels.glsl's three images at 12 and
-    // the sky's image.
+    // volume, the occupied-voxel list and its count, directional_voxels.glsl's three images at 12, the
+    // surface planes and the sky's image.
     const ShaderReflection gather = reflectFile("bounce_gather.comp");
     EXPECT_EQ(gather.stage, kCompute);
     std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute)};
@@ -237,7 +238,8 @@ TEST(SpirvReflect, BounceGatherComputeShaderHasTheBindingsItsGlslDeclares) {
     expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
     expected.push_back(binding(0, 12, kCombined, kCompute, 3));
-    expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kCompute));  // sky.glsl's environment image
+    expected.push_back(binding(0, glsl::SURFACE_PLANES_BINDING, kCombined, kCompute));  // surface_planes.glsl
+    expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kCompute));             // sky.glsl's environment image
     expectBindings(gather.bindings, expected);
     EXPECT_EQ(gather.pushConstantBytes, 8u);  // uint sliceCount, slicePhase
     EXPECT_EQ(gather.localSize[0], 64u);
@@ -258,7 +260,8 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     expected.push_back(binding(0, 18, kCombined, kFragment));       // their shadow maps
     expected.push_back(binding(0, 19, kCombined, kFragment));       // ... and their depths
     expected.push_back(binding(0, 20, kStorageBuffer, kFragment));  // their GGX table (ltc.h)
-    expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kFragment));  // the environment image
+    expected.push_back(binding(0, glsl::SURFACE_PLANES_BINDING, kCombined, kFragment));  // ray visibility's planes
+    expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kFragment));             // the environment image
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }

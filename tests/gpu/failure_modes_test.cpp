@@ -138,18 +138,17 @@ TEST_F(FailureModes, WithRayVisibilityASheetFacingTheDarkRoomLeaksUnderTwoPercen
 
 TEST_F(FailureModes, WithRayVisibilityASheetFacingTheLitRoomLeaksLessThanItDid) {
     // A single double-sided sheet whose lit front faces away from the dark room. Target: 2 %, as
-    // for the sheet facing the other way. Measured 5.8 / 18.8 / 11.5 % with the wall on a voxel
-    // boundary, a third of the way into a voxel and half way (28 / 26 / 20 % before the chains
-    // were kept off the cone's start and voxels gathered only from their own side). What is left:
-    // a voxel where the sheet meets the floor or ceiling holds the lit face and the dark floor
-    // together, with one radiance and one normal halfway between theirs (radiance per side of a
-    // voxel is the next step). The bounds are regression guards, not the target.
+    // for the sheet facing the other way; measured 2.4 / 6.6 / 4.3 % with the wall on a voxel
+    // boundary, a third of the way into a voxel and half way. What is left: a voxel where the sheet
+    // meets the floor or ceiling holds the lit face and the dark floor together, with one radiance
+    // and one normal halfway between theirs (radiance per side of a voxel is the next step). The
+    // bounds are regression guards, not the target.
     const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
     const float voxel = bench::twoRoomVoxelSize(64);
     const struct {
         float wallX;
         double guard;
-    } walls[] = {{0.0f, 0.07}, {voxel / 3.0f, 0.21}, {-voxel / 2.0f, 0.13}};
+    } walls[] = {{0.0f, 0.03}, {voxel / 3.0f, 0.08}, {-voxel / 2.0f, 0.05}};
     for (const auto& wall : walls) {
         const bench::LeakMeasurement leak =
             bench::measureLightLeak(gpu(), settings, wall.wallX, bench::SharedWall::SheetFacingLitRoom);
@@ -193,11 +192,10 @@ TEST_F(FailureModes, WithRayVisibilityTheFirstBounceHoldsAcrossResolutions) {
 
 TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
     // The sun room inside a shell 25 cm out (128², its camera, indirect light, against the sun
-    // room's path-traced reference; target 0.90-1.10 of it). Measured: balanced 2.92 (the mips let
-    // the shell's sunlit outside in through the sheets), walls 1.35, against 0.98 and 1.05 for the
-    // sun room alone: the rays stop what crosses the sheets; what is left comes from the coarse
-    // samples before a hit, whose texels straddle the room's wall, the gap and the shell's lit face.
-    // The bounds are regression guards; the target stays 0.90-1.10.
+    // room's path-traced reference; target 0.90-1.10 of it). Balanced reads 2.92: the mips let the
+    // shell's sunlit outside in through the sheets; walls' rays stop what crosses the sheets and its
+    // surface planes what its coarse samples would see of the shell beside them. Balanced's bound is
+    // a regression guard; walls is held to the target.
     const std::string references = std::string(VCT_SOURCE_DIR) + "/assets/reference/sun-room-";
     const Image truth = readPfm(references + "indirect.pfm");
     const Scene shelled = bench::makeSunRoomInASunlitShell(0.25f);
@@ -223,7 +221,8 @@ TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
         std::printf("[ shell ] %s: indirect luminance %.3f x the sun room's truth\n", preset, ratio);
         const bool rays = settings.resources.rayVisibility;
         EXPECT_GE(ratio, 0.90) << preset;
-        EXPECT_LE(ratio, rays ? 1.40 : 3.1) << preset << " (regression guard; target 1.10)";
+        if (rays) EXPECT_LE(ratio, 1.10) << preset;
+        else EXPECT_LE(ratio, 3.1) << preset << " (regression guard; target 1.10)";
     }
 }
 

@@ -41,6 +41,10 @@ TEST_F(VoxelVolumesTest, OnlyWhatTheSettingsNeedIsCreated) {
     EXPECT_EQ(twoBounces.directional[0].desc.extent.width, 16u) << "the chains start at the grid's level 1";
     EXPECT_EQ(twoBounces.directional[0].desc.extent.depth, 48u) << "two chains and the empty third between them";
     EXPECT_NE(twoBounces.gatheredLight.image, VK_NULL_HANDLE);
+    EXPECT_EQ(twoBounces.surfacePlanes.image, VK_NULL_HANDLE) << "the planes are ray visibility's";
+    const VoxelVolumes rays(gpu(), {.voxelResolution = 32, .rayVisibility = true});
+    EXPECT_NE(rays.surfacePlanes.image, VK_NULL_HANDLE);
+    EXPECT_EQ(rays.surfacePlanes.desc.mipLevels, rays.radiance.desc.mipLevels) << "read at the radiance's levels";
 }
 
 TEST_F(VoxelVolumesTest, TheRendererMemoryEstimateCountsTheVolumesOnce) {

@@ -1,0 +1,25 @@
+// The surface planes of ray visibility (ResourceSettings::rayVisibility): per texel, what lets a
+// cone's sample tell on which side of the lit surfaces in its footprint it lies. The directional
+// chains know from which direction a ray enters a texel but not where: a ray running along the
+// inside of a block's face, or of a room's wall with a sunlit shell beyond it, that enters the
+// texel holding them sees their lit outsides, as rays entering from outside do. Level 0 holds each
+// occupied voxel's mean normal n (not renormalized) and its plane's offset dot(n, q − the grid's
+// centre), q the surface point, both times the luminance of the voxel's light (radiance level 0);
+// the mip chain holds plain means (mips.comp). Both are linear in the voxels, so a trilinear sample
+// at any level gives dot(xyz, p − the grid's centre) − w = the light-weighted sum of p's signed
+// distances to the planes in its footprint, and the luminance of the radiance sample the sum of
+// the weights. Weighted by light, not opacity: a dim wall facing the sample and a bright face
+// beyond it, turned away, cancel by opacity; what matters is where the footprint's light comes from.
+#ifndef VCT_SURFACE_PLANES_H
+#define VCT_SURFACE_PLANES_H
+
+#include "cpp_glsl.h"
+
+VCT_SHARED_BEGIN
+
+// The binding of the surface planes (a sampler3D) in every pass that traces cones with rays.
+const uint SURFACE_PLANES_BINDING = 21u;
+
+VCT_SHARED_END
+
+#endif
