@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,9 @@ ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCod
     setInfo.bindingCount = uint32_t(setZero.size());
     setInfo.pBindings = setZero.data();
     ShaderLayout result;
+    result.name = pipelineName;
+    for (const ReflectedBinding& binding : merged.bindings)
+        if (binding.set == 0) result.setZero.push_back(binding);
     VK_CHECK(vkCreateDescriptorSetLayout(context.device, &setInfo, nullptr, &result.setLayout));
 
     std::vector<VkDescriptorSetLayout> sets = {result.setLayout};
@@ -123,7 +127,7 @@ Pipeline createComputePipeline(GpuContext& context, const std::string& shaderNam
     VkPipeline pipeline = VK_NULL_HANDLE;
     const VkResult result = vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
     vkDestroyShaderModule(context.device, module, nullptr);
-    Pipeline owned(context, pipeline, layout.layout, layout.setLayout);  // frees the layouts if the check throws
+    Pipeline owned(context, pipeline, layout);  // frees the layouts if the check throws
     VK_CHECK(result);
     return owned;
 }
@@ -205,7 +209,7 @@ Pipeline createGraphicsPipeline(GpuContext& context, const GraphicsPipelineDesc&
     std::vector<ShaderCode> code = {loadShader(desc.vertexShader)};
     if (!desc.fragmentShader.empty()) code.push_back(loadShader(desc.fragmentShader));
     const ShaderLayout layout = createShaderLayout(context, code, laterSets);
-    Pipeline owned(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // frees the layouts on a throw
+    Pipeline owned(context, VK_NULL_HANDLE, layout);  // frees the layouts on a throw
     owned.pipeline = createGraphicsPipeline(context, layout.layout, desc, code);
     return owned;
 }
@@ -260,9 +264,42 @@ DescriptorPush& DescriptorPush::sampledImages(uint32_t binding, const std::vecto
     return *this;
 }
 
+namespace {
+
+std::string descriptorTypeName(VkDescriptorType type) {
+    switch (type) {
+        case VK_DESCRIPTOR_TYPE_SAMPLER: return "sampler";
+        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "sampled image (with its sampler)";
+        case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "sampled image";
+        case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
+        case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "uniform buffer";
+        case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
+        default: return "descriptor type " + std::to_string(int(type));
+    }
+}
+
+// The write's slot, type and array elements are among what the shaders declare.
+void checkWrite(const VkWriteDescriptorSet& write, const Pipeline& pipeline) {
+    const std::string where = pipeline.name + ": binding " + std::to_string(write.dstBinding);
+    auto declared = std::find_if(pipeline.setZero.begin(), pipeline.setZero.end(),
+                                 [&](const ReflectedBinding& b) { return b.binding == write.dstBinding; });
+    if (declared == pipeline.setZero.end())
+        throw Error(where + " is written as a " + descriptorTypeName(write.descriptorType) +
+                    ", but its shaders declare no such binding");
+    if (declared->type != write.descriptorType)
+        throw Error(where + " is a " + descriptorTypeName(declared->type) + " in its shaders, written as a " +
+                    descriptorTypeName(write.descriptorType));
+    if (write.dstArrayElement + write.descriptorCount > declared->count)
+        throw Error(where + " holds " + std::to_string(declared->count) + " descriptor(s), written with " +
+                    std::to_string(write.dstArrayElement + write.descriptorCount));
+}
+
+}  // namespace
+
 void DescriptorPush::push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint,
-                          VkPipelineLayout layout, uint32_t set) {
-    context.cmdPushDescriptorSet(commands, bindPoint, layout, set, uint32_t(writes_.size()), writes_.data());
+                          const Pipeline& pipeline) {
+    for (const VkWriteDescriptorSet& write : writes_) checkWrite(write, pipeline);
+    context.cmdPushDescriptorSet(commands, bindPoint, pipeline.layout, 0, uint32_t(writes_.size()), writes_.data());
 }
 
 }  // namespace vct
@@ -280,6 +317,8 @@ Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
     std::swap(pipeline, other.pipeline);
     std::swap(layout, other.layout);
     std::swap(setLayout, other.setLayout);
+    std::swap(name, other.name);
+    std::swap(setZero, other.setZero);
     std::swap(device_, other.device_);
     return *this;
 }

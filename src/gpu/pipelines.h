@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gpu/context.h"
+#include "gpu/spirv_reflect.h"
 
 namespace vct {
 
@@ -32,6 +33,8 @@ VkShaderModule createShaderModule(GpuContext& context, const ShaderCode& code);
 struct ShaderLayout {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // set 0
+    std::string name;                                  // the shaders', "a.vert + a.frag"
+    std::vector<ReflectedBinding> setZero;             // set 0's bindings, as the shaders declare them
 };
 ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCode>& stages,
                                 const std::vector<VkDescriptorSetLayout>& laterSets = {});
@@ -50,6 +53,8 @@ struct GraphicsPipelineDesc {
 };
 
 // Collects descriptor writes for one vkCmdPushDescriptorSetKHR call.
+class Pipeline;
+
 class DescriptorPush {
 public:
     DescriptorPush& buffer(uint32_t binding, VkBuffer buffer,
@@ -62,8 +67,10 @@ public:
     DescriptorPush& storageImages(uint32_t binding, const std::vector<VkImageView>& views);
     DescriptorPush& sampledImages(uint32_t binding, const std::vector<VkImageView>& views, VkSampler sampler,
                                   VkImageLayout layout);
-    void push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint, VkPipelineLayout layout,
-              uint32_t set = 0);
+    // Each write is checked against the bindings the pipeline's shaders declare (its slot, type and
+    // array size): a mismatch throws an Error naming the shaders and the binding, where the
+    // validation layer would report it only when enabled, and the driver might read garbage.
+    void push(GpuContext& context, VkCommandBuffer commands, VkPipelineBindPoint bindPoint, const Pipeline& pipeline);
 
 private:
     VkWriteDescriptorSet& addWrite(uint32_t binding, VkDescriptorType type, uint32_t count);
@@ -82,9 +89,14 @@ namespace vct {
 class Pipeline {
 public:
     Pipeline() = default;
-    Pipeline(GpuContext& context, VkPipeline createdPipeline, VkPipelineLayout pipelineLayout,
-             VkDescriptorSetLayout descriptorSetLayout)
-        : pipeline(createdPipeline), layout(pipelineLayout), setLayout(descriptorSetLayout), device_(context.device) {}
+    // Takes ownership of `shaderLayout`'s layouts.
+    Pipeline(GpuContext& context, VkPipeline createdPipeline, const ShaderLayout& shaderLayout)
+        : pipeline(createdPipeline),
+          layout(shaderLayout.layout),
+          setLayout(shaderLayout.setLayout),
+          name(shaderLayout.name),
+          setZero(shaderLayout.setZero),
+          device_(context.device) {}
     ~Pipeline();
     Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
     Pipeline& operator=(Pipeline&& other) noexcept;
@@ -92,6 +104,8 @@ public:
     VkPipeline pipeline = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    std::string name;                       // its shaders', for errors
+    std::vector<ReflectedBinding> setZero;  // the bindings its shaders declare in set 0
 
 private:
     VkDevice device_ = VK_NULL_HANDLE;

@@ -132,7 +132,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
             .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), volumeSampler,
                           VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList);
         vkCmdPushConstants(commands, traceList.layout, VK_SHADER_STAGE_ALL, 0, sizeof(targetDownscale),
                            &targetDownscale);
         vkCmdDispatchIndirect(commands, list.buffer, 0);
@@ -153,7 +153,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(8, last.light.view, point)
         .sampledImage(9, last.positions.view, point)
         .sampledImage(10, last.normals.view, point)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline);
     vkCmdPushConstants(commands, reprojectPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
     listWritten(commands);
@@ -175,7 +175,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(8, now.light.view, point)
         .sampledImage(9, now.positions.view, point)
         .sampledImage(10, now.normals.view, point)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline);
     vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     // One invocation per cell between four representatives, from the one before the first.
     const uint32_t cellsWide = reducedWidth + 1, cellsHigh = reducedHeight + 1;
@@ -196,7 +196,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .sampledImage(12, lastSamples.view, point)
         .sampledImage(13, lastGBufferPosition.view, point)
         .sampledImage(14, lastGBufferNormal.view, point)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline);
     vkCmdPushConstants(commands, edgeHistoryPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatchIndirect(commands, edgeList.buffer, 0);
     listWritten(commands);

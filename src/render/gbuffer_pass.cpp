@@ -98,7 +98,7 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
             .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
             .buffer(1, scene.vertices.buffer)
             .buffer(2, scene.materials.buffer)
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing);
         vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing.layout, 1, 1, &scene.textureSet, 0,
                                 nullptr);
         for (const SceneGpu::MaterialRange& range : scene.materialRanges) {

@@ -50,7 +50,7 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
         .storageImage(12, volumes.emission.view)
         .sampledImage(13, shadows.areaMaps.view, shadows.compareSampler.sampler)
         .buffer(14, areaLightCache_.buffer)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, chosen.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, chosen);
     const uint32_t add = addGathered ? 1u : 0u;
     vkCmdPushConstants(commands, chosen.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);
     vkCmdDispatchIndirect(commands, volumes.occupiedDispatch.buffer, 0);
@@ -83,7 +83,7 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
         .buffer(11, volumes.occupiedDispatch.buffer)
         .sampledImages(12, volumes.directionalViews(), sampler, VK_IMAGE_LAYOUT_GENERAL)
         .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather);
     vkCmdPushConstants(commands, gather.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);
     vkCmdDispatch(commands, groups, 1, 1);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

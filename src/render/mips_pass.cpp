@@ -33,7 +33,7 @@ void MipsPass::recordSurfacePlanes(VkCommandBuffer commands, const VoxelVolumes&
         .storageImage(0, mipView(volumes.radiance, 0))
         .storageImage(1, volumes.normal.view)
         .storageImage(2, mipView(planes, 0))
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline);
     const uint32_t groups = (planes.desc.extent.width + 3) / 4;
     vkCmdDispatch(commands, groups, groups, groups);
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -63,7 +63,7 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
                 .storageImage(2, volumes.normal.view)
                 .storageImage(3, mipView(leaving, level == 0 ? 0 : level - 1))
                 .storageImage(4, mipView(leaving, level))
-                .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.layout);
+                .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline);
             const uint32_t push[2] = {axis, rayVisibility ? 1u : 0u};  // mips_anisotropic.comp's Push
             vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), push);
             // One invocation per line of texels along the axis.
@@ -82,7 +82,7 @@ void MipsPass::recordIsotropic(VkCommandBuffer commands, const GpuImage& volume)
         DescriptorPush()
             .storageImage(0, mipView(volume, level - 1))
             .storageImage(1, mipView(volume, level))
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
         const uint32_t size = std::max(volume.desc.extent.width >> level, 1u);
         const uint32_t groups = (size + 3) / 4;
         vkCmdDispatch(commands, groups, groups, groups);

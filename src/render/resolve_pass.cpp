@@ -24,7 +24,7 @@ void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled)
     DescriptorPush()
         .sampledImage(0, supersampled.view, pointSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(1, resolved.view)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(supersample), &supersample);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
     imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,

@@ -73,7 +73,7 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(18, shadows.areaMaps.view, shadows.compareSampler.sampler)
             .sampledImage(19, shadows.areaMaps.view, pointSampler.sampler)
             .sampledImage(glsl::SKY_BINDING, inputs.sky->view(), inputs.sky->sampler())
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant);
     });
     // GENERAL, as the resolved image is left: the resolve, a read-back copy and the viewer's
     // present pass all read the frame's output from it.

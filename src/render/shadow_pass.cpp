@@ -192,7 +192,7 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
         DescriptorPush()
             .buffer(0, scene.vertices.buffer)
             .buffer(1, viewsBuffer)
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     };
     bindOpaque();
     vkCmdBindIndexBuffer(commands, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
@@ -229,7 +229,7 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
                     .buffer(0, scene.vertices.buffer)
                     .buffer(1, viewsBuffer)
                     .buffer(2, scene.materials.buffer)
-                    .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.layout);
+                    .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline);
                 vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.layout, 1, 1,
                                         &scene.textureSet, 0, nullptr);
                 opaqueBound = false;

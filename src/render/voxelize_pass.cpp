@@ -288,7 +288,7 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
             .buffer(3, sceneGpu.materials.buffer)
             .buffer(4, chunk.items.buffer)
             .buffers(5, accumulationBuffers())
-            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout);
+            .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline);
         glsl::VoxelizeParams chunkParams = params;
         chunkParams.grid.resolution.w = chunk.count;
         chunkParams.dispatch.x = chunk.groupsPerRow;
@@ -310,7 +310,7 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
         .buffer(4, volumes.occupiedVoxels.buffer)
         .buffer(5, volumes.occupiedDispatch.buffer)
         .storageImages(6, volumes.lightLevelZeroViews())
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline);
     vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
     const uint32_t groups = resolution / 4;
     vkCmdDispatch(commands, groups, groups, groups);

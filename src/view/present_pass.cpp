@@ -110,12 +110,12 @@ PresentPass::PresentPass(GpuContext& context, VkFormat swapchainFormat)
     renderPass = createRenderPass(context, swapchainFormat);
     const ShaderCode vertex = loadShader("fullscreen.vert"), fragment = loadShader("tonemap.frag");
     const ShaderLayout layout = createShaderLayout(context, {vertex, fragment});
-    tonemap_ = Pipeline(context, VK_NULL_HANDLE, layout.layout, layout.setLayout);  // freed on a throw
+    tonemap_ = Pipeline(context, VK_NULL_HANDLE, layout);  // freed on a throw
     tonemap_.pipeline = createPresentPipeline(context, layout.layout, renderPass, vertex, fragment,
                                               VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST);
     const ShaderCode boxVertex = loadShader("grid_bounds.vert"), boxFragment = loadShader("grid_bounds.frag");
     const ShaderLayout boxLayout = createShaderLayout(context, {boxVertex, boxFragment});
-    gridBounds_ = Pipeline(context, VK_NULL_HANDLE, boxLayout.layout, boxLayout.setLayout);
+    gridBounds_ = Pipeline(context, VK_NULL_HANDLE, boxLayout);
     gridBounds_.pipeline = createPresentPipeline(context, boxLayout.layout, renderPass, boxVertex, boxFragment,
                                                  VK_PRIMITIVE_TOPOLOGY_LINE_LIST);
 }
@@ -167,7 +167,7 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.pipeline);
     DescriptorPush()
         .sampledImage(0, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
-        .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.layout);
+        .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_);
     const glsl::TonemapPush push{glm::vec2(float(area.offset.x), float(area.offset.y)),
                                  glm::vec2(1.0f / float(area.extent.width), 1.0f / float(area.extent.height)),
                                  params.exposure, params.toneCurve ? 1u : 0u, uint32_t(params.curve)};

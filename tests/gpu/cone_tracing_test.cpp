@@ -125,7 +125,7 @@ protected:
                 .buffer(2, probeBuffer.buffer)
                 .buffer(3, results.buffer)
                 .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
-                .push(context, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+                .push(context, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
             vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(count), &count);
             vkCmdDispatch(commands, (count + 63) / 64, 1, 1);
         });
