@@ -12,6 +12,8 @@ namespace {
 constexpr uint32_t kMagic = 0x07230203u;
 constexpr uint32_t kHeaderWords = 5;
 enum Op : uint32_t {
+    OpName = 5,
+    OpMemberName = 6,
     OpEntryPoint = 15,
     OpExecutionMode = 16,
     OpTypeBool = 20,
@@ -73,7 +75,22 @@ struct Id {
     std::optional<uint32_t> set, binding, specId, arrayStride;
     bool block = false, bufferBlock = false;
     std::vector<MemberLayout> memberLayouts;
+    std::string name;                      // OpName
+    std::vector<std::string> memberNames;  // OpMemberName
 };
+
+// A literal string of a SPIR-V instruction: UTF-8, nul-terminated, packed four bytes a word, the
+// first byte in the lowest bits. `words` are the instruction's words from the string's first.
+std::string literalString(const uint32_t* words, uint32_t count) {
+    std::string text;
+    for (uint32_t i = 0; i < count; ++i)
+        for (int byte = 0; byte < 4; ++byte) {
+            const char c = char((words[i] >> (8 * byte)) & 0xffu);
+            if (c == '\0') return text;
+            text += c;
+        }
+    return text;
+}
 
 const char* typeName(VkDescriptorType type) {
     switch (type) {
@@ -236,6 +253,19 @@ ShaderReflection reflectShader(const std::vector<uint32_t>& words, const std::st
             id.wordCount = wordCount;
         };
         switch (opcode) {
+            case OpName:
+                if (wordCount < 3) bad("has too few operands");
+                module.at(arg(1)).name = literalString(&words[at + 2], wordCount - 2);
+                break;
+            case OpMemberName: {
+                if (wordCount < 4) bad("has too few operands");
+                Id& target = module.at(arg(1));
+                const uint32_t member = arg(2);
+                if (member >= words.size()) bad("names member " + std::to_string(member) + " of a struct");
+                if (member >= target.memberNames.size()) target.memberNames.resize(member + 1);
+                target.memberNames[member] = literalString(&words[at + 3], wordCount - 3);
+                break;
+            }
             case OpEntryPoint:
                 if (arg(1) >= std::size(kStages))
                     bad("has execution model " + std::to_string(arg(1)) + ", not supported");
@@ -290,6 +320,20 @@ ShaderReflection reflectShader(const std::vector<uint32_t>& words, const std::st
         at += wordCount;
     }
     if (result.stage == 0) module.fail("the module has no entry point");
+    // Ids in order, so that of two laid-out types of one name (a struct in a std140 block and in a
+    // std430 one) the first is kept, whatever the map's order.
+    std::vector<uint32_t> structIds;
+    for (const auto& [number, id] : module.ids)
+        if (id.opcode == OpTypeStruct && !id.name.empty() && !id.memberLayouts.empty()) structIds.push_back(number);
+    std::sort(structIds.begin(), structIds.end());
+    for (uint32_t number : structIds) {
+        const Id& id = module.ids[number];
+        if (result.structLayouts.count(id.name)) continue;
+        std::vector<ReflectedMember>& members = result.structLayouts[id.name];
+        for (uint32_t i = 0; i + 2 < id.wordCount; ++i)
+            members.push_back({i < id.memberNames.size() ? id.memberNames[i] : std::string(),
+                               i < id.memberLayouts.size() ? id.memberLayouts[i].offset : 0u});
+    }
     for (int axis = 0; axis < 3; ++axis)
         if (localSizeIds[axis] != 0) result.localSize[axis] = module.value(localSizeIds[axis]);
 

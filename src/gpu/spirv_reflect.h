@@ -7,6 +7,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,11 +25,21 @@ struct ReflectedBinding {
     VkShaderStageFlags stages = 0;
 };
 
+// A member of a struct with an explicit layout (a uniform or storage block's, or a struct inside
+// one): its name from the module's debug names (OpMemberName) and its byte offset.
+struct ReflectedMember {
+    std::string name;
+    uint32_t offset = 0;
+};
+
 struct ShaderReflection {
     VkShaderStageFlags stage = 0;            // from the OpEntryPoint execution models
     std::vector<ReflectedBinding> bindings;  // sorted by (set, binding)
-    uint32_t pushConstantBytes = 0;          // end of the last push-constant member (offset + size); 0 if none
-    uint32_t localSize[3] = {1, 1, 1};       // compute: OpExecutionMode LocalSize or LocalSizeId
+    // The laid-out structs by their names (OpName), members in declaration order: what the C++
+    // mirror of a shared struct is checked against. Empty where the module has no debug names.
+    std::map<std::string, std::vector<ReflectedMember>> structLayouts;
+    uint32_t pushConstantBytes = 0;     // end of the last push-constant member (offset + size); 0 if none
+    uint32_t localSize[3] = {1, 1, 1};  // compute: OpExecutionMode LocalSize or LocalSizeId
 };
 
 // Reflects every descriptor variable the module declares (glslang keeps unused ones too). `name` is used

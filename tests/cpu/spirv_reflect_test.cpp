@@ -1,5 +1,6 @@
 // SPIR-V reflection (src/gpu/spirv_reflect): the committed shaders in spirv/ give the bindings their GLSL
 // declares, small modules compiled offline cover each descriptor kind, and malformed words are errors.
+#include <cstddef>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -11,6 +12,7 @@
 #include "equirectangular.h"
 #include "error.h"
 #include "gpu/spirv_reflect.h"
+#include "gpu_types.h"
 #include "present.h"
 #include "surface_planes.h"
 #include "voxelize.h"
@@ -265,6 +267,109 @@ TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
     expectBindings(shade.bindings, expected);
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }
+
+// The structs C++ fills and the shaders read byte for byte: each member's offset in the SPIR-V
+// (the std140 uniform block's, the std430 buffers') is its offsetof in C++, and no member is
+// missing from either. A member added to one side only, or a vec3 followed by a vec3, fails here.
+struct MemberOffset {
+    const char* name;
+    size_t offset;
+};
+#define MEMBER(type, member) \
+    MemberOffset { #member, offsetof(glsl::type, member) }
+
+void expectSameLayout(const ShaderReflection& shader, const std::string& structName,
+                      const std::vector<MemberOffset>& cpp) {
+    const auto found = shader.structLayouts.find(structName);
+    ASSERT_NE(found, shader.structLayouts.end()) << structName << " is not among the shader's laid-out structs";
+    const std::vector<ReflectedMember>& spirv = found->second;
+    ASSERT_EQ(spirv.size(), cpp.size()) << structName << ": members in the SPIR-V against the C++ list";
+    for (size_t i = 0; i < cpp.size(); ++i) {
+        EXPECT_EQ(spirv[i].name, cpp[i].name) << structName << " member " << i;
+        EXPECT_EQ(spirv[i].offset, cpp[i].offset) << structName << "::" << cpp[i].name;
+    }
+}
+
+TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
+    const ShaderReflection shade = reflectFile("shade.frag");
+    expectSameLayout(shade, "FrameConstants",
+                     {
+                         MEMBER(FrameConstants, viewProjection),
+                         MEMBER(FrameConstants, inverseViewProjection),
+                         MEMBER(FrameConstants, grid),
+                         MEMBER(FrameConstants, cameraPosition),
+                         MEMBER(FrameConstants, lightCount),
+                         MEMBER(FrameConstants, shadowViewCount),
+                         MEMBER(FrameConstants, componentFlags),
+                         MEMBER(FrameConstants, anisotropicVoxels),
+                         MEMBER(FrameConstants, debugView),
+                         MEMBER(FrameConstants, renderSize),
+                         MEMBER(FrameConstants, inverseRenderSize),
+                         MEMBER(FrameConstants, ambientFactor),
+                         MEMBER(FrameConstants, shadowNormalOffset),
+                         MEMBER(FrameConstants, pcfRadius),
+                         MEMBER(FrameConstants, radianceScale),
+                         MEMBER(FrameConstants, coneTanHalfAperture),
+                         MEMBER(FrameConstants, coneStep),
+                         MEMBER(FrameConstants, coneMaxDistance),
+                         MEMBER(FrameConstants, coneStartOffset),
+                         MEMBER(FrameConstants, aoFalloff),
+                         MEMBER(FrameConstants, coneStopOpacity),
+                         MEMBER(FrameConstants, diffuseCentreWeight),
+                         MEMBER(FrameConstants, diffuseConeCount),
+                         MEMBER(FrameConstants, environmentTurns),
+                         MEMBER(FrameConstants, debugVoxelMip),
+                         MEMBER(FrameConstants, diffuseDownscale),
+                         MEMBER(FrameConstants, firstAreaLight),
+                         MEMBER(FrameConstants, environment),
+                     });
+    expectSameLayout(shade, "VoxelGridParams",
+                     {
+                         MEMBER(VoxelGridParams, originVoxelSize),
+                         MEMBER(VoxelGridParams, resolution),
+                     });
+    expectSameLayout(shade, "GpuMaterial",
+                     {
+                         MEMBER(GpuMaterial, baseColorFactor),
+                         MEMBER(GpuMaterial, emission),
+                         MEMBER(GpuMaterial, voxelEmission),
+                         MEMBER(GpuMaterial, metallic),
+                         MEMBER(GpuMaterial, roughness),
+                         MEMBER(GpuMaterial, specularWeight),
+                         MEMBER(GpuMaterial, baseColorTexture),
+                         MEMBER(GpuMaterial, emissiveTexture),
+                         MEMBER(GpuMaterial, metallicRoughnessTexture),
+                         MEMBER(GpuMaterial, normalTexture),
+                         MEMBER(GpuMaterial, normalScale),
+                         MEMBER(GpuMaterial, occlusionTexture),
+                         MEMBER(GpuMaterial, occlusionStrength),
+                         MEMBER(GpuMaterial, alphaMode),
+                         MEMBER(GpuMaterial, alphaCutoff),
+                         MEMBER(GpuMaterial, baseColorTransform),
+                         MEMBER(GpuMaterial, emissiveTransform),
+                         MEMBER(GpuMaterial, metallicRoughnessTransform),
+                         MEMBER(GpuMaterial, normalTransform),
+                         MEMBER(GpuMaterial, occlusionTransform),
+                     });
+    expectSameLayout(shade, "GpuTextureTransform",
+                     {
+                         MEMBER(GpuTextureTransform, rowU),
+                         MEMBER(GpuTextureTransform, rowV),
+                     });
+    expectSameLayout(shade, "GpuLight",
+                     {
+                         MEMBER(GpuLight, radiantIntensity),
+                         MEMBER(GpuLight, positionRange),
+                         MEMBER(GpuLight, direction),
+                         MEMBER(GpuLight, spotShadow),
+                     });
+    expectSameLayout(reflectFile("gbuffer.vert"), "GpuVertex",
+                     {MEMBER(GpuVertex, positionU), MEMBER(GpuVertex, normalV), MEMBER(GpuVertex, texCoord1),
+                      MEMBER(GpuVertex, tangent)});
+    EXPECT_EQ(sizeof(glsl::FrameConstants) % 16, 0u) << "a std140 struct's size is a multiple of 16";
+    EXPECT_EQ(sizeof(glsl::GpuMaterial) % 16, 0u) << "the std430 array stride of a struct with vec4s";
+}
+#undef MEMBER
 
 TEST(SpirvReflect, VertexShadersAreVertexStage) {
     const ShaderReflection gbuffer = reflectFile("gbuffer.vert");
