@@ -34,9 +34,9 @@ std::vector<Option> benchOptions() {
     std::vector<Option> options = {
         {"scenes", "A,B", "built-in scenes or glTF files (default: every built-in scene)"},
         {"out-dir", "DIR", "where bench.csv, bench.json and bench.svg go (default bench-results)"},
-        {"preset", "NAME", "measure just that preset (fast, balanced, quality)"},
+        {"preset", "NAME", "measure just that preset (" + presetNameList() + ")"},
         {"quick", "", "two cheap settings, for tests (no failure modes)"},
-        {"no-failure-modes", "", "skip the leak, resolution-drift and flicker measurements"},
+        {"no-failure-modes", "", "skip the leak, shell, closed-block, resolution-drift and flicker measurements"},
         {"comparison", "", "measure only the side-by-side with an OpenGL VCT (1280x720 cornell-sun)"},
         {"no-comparison", "", "skip that side-by-side"},
         {"frames", "N", "measured frames per setting; medians are reported (default 3)"},
@@ -218,7 +218,9 @@ int runBench(const std::vector<std::string>& rawArguments) {
             if (references != info.references.end() && references->second.indirectOneBounce)
                 truths.push_back({&scene, &*references->second.indirectOneBounce});
         }
-        const bench::FailureModeReport report = bench::measureFailureModes(context, settings, truths);
+        const auto sunRoom = info.references.find("sun-room");
+        const bench::FailureModeReport report = bench::measureFailureModes(
+            context, settings, truths, sunRoom != info.references.end() ? &sunRoom->second.indirect : nullptr);
         outputs.emplace_back(outDir + "/failure_modes.json", bench::failureModesJson(report));
         progress.hideWhile([&] { std::printf("\n%s", bench::failureModesText(report).c_str()); });
         for (const bench::ResolutionLuminance& r : report.drift)

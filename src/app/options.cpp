@@ -17,15 +17,9 @@ std::string number(double value) {
     return text;
 }
 
-std::string presetNames() {
-    std::string names;
-    for (const auto& [name, unused] : renderPresets()) names += (names.empty() ? "" : ", ") + name;
-    return names;
-}
-
 void applyPreset(const OptionValue& value, RenderSettings& settings) {
     const std::optional<RenderSettings> preset = findRenderPreset(value.text());
-    if (!preset) throw Error("--preset must be one of " + presetNames() + ", not '" + value.text() + "'");
+    if (!preset) throw Error("--preset must be one of " + presetNameList() + ", not '" + value.text() + "'");
     settings = *preset;
 }
 
@@ -62,7 +56,8 @@ std::vector<Option> makeSharedOptions() {
     std::string sceneNames;
     for (const std::string& name : builtinSceneNames()) sceneNames += " " + name;
     return {
-        {"preset", "NAME", "start from a preset (" + presetNames() + "); the options below override it", applyPreset},
+        {"preset", "NAME", "start from a preset (" + presetNameList() + "); the options below override it",
+         applyPreset},
         {"width", "W", "image width in pixels", [](const V& v, S& s) { s.image.width = v.whole(1, 16384); },
          [](const S& s) { return std::to_string(s.image.width); }},
         {"height", "H", "image height in pixels", [](const V& v, S& s) { s.image.height = v.whole(1, 16384); },

@@ -140,6 +140,33 @@ Scene makeSunRoomInASunlitShell(float gap) {
     return scene;
 }
 
+double measureShelledRoomIndirect(GpuContext& context, RenderSettings settings, const Image& sunRoomIndirect) {
+    settings.shading.mode = RenderMode::Indirect;
+    Renderer renderer(context, makeSunRoomInASunlitShell(kShellGap), settings);
+    renderer.renderFrame();
+    const double truth = meanLuminance(sunRoomIndirect);
+    return truth > 0.0 ? meanLuminance(renderer.readImage()) / truth : 0.0;
+}
+
+InsideClosedBlock measureInsideClosedBlock(GpuContext& context, RenderSettings settings) {
+    Renderer renderer(context, loadScene("cornell"), settings);
+    InsideClosedBlock seen;
+    renderer.renderFrame();
+    seen.usualLuminance = meanLuminance(renderer.readImage());
+    Camera camera = renderer.camera();
+    camera.position = glm::vec3(0.368f, 0.2f, 0.351f);  // the middle of the tall block
+    camera.forward = glm::vec3(0.0f, 0.0f, 1.0f);
+    camera.znear = 0.001f;
+    renderer.setCamera(camera);
+    renderer.renderFrame();
+    seen.insideLuminance = meanLuminance(renderer.readImage());
+    settings.shading.mode = RenderMode::Direct;
+    renderer.setShading(settings.shading);
+    renderer.renderFrame();
+    seen.insideDirect = meanLuminance(renderer.readImage());
+    return seen;
+}
+
 float twoRoomVoxelSize(uint32_t resolution) {
     return fitVoxelGrid(makeTwoRoomScene(0.0f, SharedWall::TwoFaces).bounds(), resolution).originVoxelSize.w;
 }

@@ -60,6 +60,21 @@ LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& sett
 // in), so the sun room's path-traced references are its truth; what its sunlit outside adds to the
 // room's light leaked through the sheets.
 Scene makeSunRoomInASunlitShell(float gap);
+inline constexpr float kShellGap = 0.25f;  // metres
+// The indirect light of the sun room in a shell kShellGap out (its camera, the settings' image
+// size) over the sun room's path-traced indirect light `sunRoomIndirect` (the same size): 1 where
+// the shell adds nothing.
+double measureShelledRoomIndirect(GpuContext& context, RenderSettings settings, const Image& sunRoomIndirect);
+
+// ---- A camera inside a closed block: the middle of the Cornell box's tall block, looking at one
+// of its faces. No light reaches its inner faces, so its ground truth is black.
+struct InsideClosedBlock {
+    double usualLuminance = 0.0;   // the Cornell box's own view, full light
+    double insideLuminance = 0.0;  // inside the block, full light (ground truth 0)
+    double insideDirect = 0.0;     // the same, direct light alone (ground truth 0)
+    double ratio() const { return usualLuminance > 0.0 ? insideLuminance / usualLuminance : 0.0; }
+};
+InsideClosedBlock measureInsideClosedBlock(GpuContext& context, RenderSettings settings);
 
 // ---- Self-illumination: a lone 2 m square lit by a sun 45° up, and nothing else. No light can
 // reach it twice, so its true indirect light is 0: whatever indirect light it gets, it gathered from

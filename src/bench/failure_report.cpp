@@ -31,7 +31,7 @@ double spread(const std::vector<ResolutionLuminance>& drift) {
 }  // namespace
 
 FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings& settings,
-                                      const std::vector<OneBounceTruth>& truths) {
+                                      const std::vector<OneBounceTruth>& truths, const Image* sunRoomIndirect) {
     FailureModeReport report;
     report.setting = settingLabel(settings);
 
@@ -40,6 +40,12 @@ FailureModeReport measureFailureModes(GpuContext& context, const RenderSettings&
     for (SharedWall wall : kSharedWalls)
         for (float offset : {0.0f, 1.0f / 3.0f, -0.5f})
             report.leaks.push_back({wall, offset, measureLightLeak(context, settings, offset * voxel, wall)});
+    for (float thickness : {1.0f, 2.0f, 4.0f})
+        report.thickWalls.push_back(
+            {thickness,
+             measureLightLeak(context, settings, makeTwoRoomScene(0.0f, SharedWall::TwoFaces, thickness * voxel))});
+    if (sunRoomIndirect) report.shelledRoomIndirect = measureShelledRoomIndirect(context, settings, *sunRoomIndirect);
+    report.insideBlock = measureInsideClosedBlock(context, settings);
 
     const Scene cornell = loadScene("cornell");
     RenderSettings indirect = settings;
@@ -68,6 +74,15 @@ std::string failureModesText(const FailureModeReport& report) {
             "  leak, %s wall %+.2f voxel into its voxel: dark room %.4f of the lit room (truth 0), lit room %.3f\n",
             sharedWallName(leak.wall), double(leak.wallOffsetVoxels), leak.measurement.leakRatio(),
             leak.measurement.litRoomLuminance);
+    for (const FailureModeReport::ThickWall& wall : report.thickWalls)
+        text +=
+            format("  leak, two faces %.0f voxel(s) apart: dark room %.4f of the lit room (truth 0), lit room %.3f\n",
+                   double(wall.thicknessVoxels), wall.measurement.leakRatio(), wall.measurement.litRoomLuminance);
+    if (report.shelledRoomIndirect)
+        text += format("  sun room in a sunlit shell %.2f m out: indirect light %.3f × the sun room's (truth 1)\n",
+                       double(kShellGap), *report.shelledRoomIndirect);
+    text += format("  camera inside a closed block: %.4f of the room's light (truth 0), direct %.4f\n",
+                   report.insideBlock.ratio(), report.insideBlock.insideDirect);
     for (const ResolutionLuminance& r : report.drift) {
         text += format("  Cornell first bounce at %3u³: mean luminance %.4f", r.voxelResolution, r.meanLuminance);
         if (report.driftReference > 0.0)
@@ -99,8 +114,24 @@ std::string failureModesJson(const FailureModeReport& report) {
                 ", \"dark_room\": " + jsonNumber(leak.measurement.darkRoomLuminance) +
                 ", \"ratio\": " + jsonNumber(leak.measurement.leakRatio()) + "}";
     }
+    json += "\n  ],\n  \"thick_walls\": [";
+    for (size_t i = 0; i < report.thickWalls.size(); ++i) {
+        const FailureModeReport::ThickWall& wall = report.thickWalls[i];
+        json += std::string(i ? "," : "") + "\n    {\"thickness_voxels\": " + jsonNumber(wall.thicknessVoxels) +
+                ", \"lit_room\": " + jsonNumber(wall.measurement.litRoomLuminance) +
+                ", \"dark_room\": " + jsonNumber(wall.measurement.darkRoomLuminance) +
+                ", \"ratio\": " + jsonNumber(wall.measurement.leakRatio()) + "}";
+    }
+    json += "\n  ],";
+    if (report.shelledRoomIndirect)
+        json += "\n  \"shelled_room\": {\"gap_m\": " + jsonNumber(kShellGap) +
+                ", \"indirect_over_truth\": " + jsonNumber(*report.shelledRoomIndirect) + "},";
+    json += "\n  \"inside_closed_block\": {\"usual\": " + jsonNumber(report.insideBlock.usualLuminance) +
+            ", \"inside\": " + jsonNumber(report.insideBlock.insideLuminance) +
+            ", \"inside_direct\": " + jsonNumber(report.insideBlock.insideDirect) +
+            ", \"ratio\": " + jsonNumber(report.insideBlock.ratio()) + "},";
     json +=
-        "\n  ],\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect, first bounce\", "
+        "\n  \"resolution_drift\": {\n    \"scene\": \"cornell\", \"mode\": \"indirect, first bounce\", "
         "\"reference_luminance\": " +
         jsonNumber(report.driftReference) + ", \"spread\": " + jsonNumber(spread(report.drift)) +
         ",\n    \"resolutions\": [";

@@ -72,6 +72,12 @@ const std::vector<PresetSummary>& presetSummaries() {
     return summaries;
 }
 
+std::string presetNameList() {
+    std::string names;
+    for (const auto& [name, unused] : renderPresets()) names += (names.empty() ? "" : ", ") + name;
+    return names;
+}
+
 std::optional<RenderSettings> findRenderPreset(const std::string& name) {
     for (const auto& [presetName, settings] : renderPresets())
         if (presetName == name) return settings;

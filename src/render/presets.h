@@ -34,5 +34,7 @@ const std::vector<PresetSummary>& presetSummaries();
 
 // The preset called `name`, or nullopt.
 std::optional<RenderSettings> findRenderPreset(const std::string& name);
+// The presets' names in renderPresets() order, comma-separated: for help texts and errors.
+std::string presetNameList();
 
 }  // namespace vct

@@ -198,7 +198,7 @@ TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
     // a regression guard; walls is held to the target.
     const std::string references = std::string(VCT_SOURCE_DIR) + "/assets/reference/sun-room-";
     const Image truth = readPfm(references + "indirect.pfm");
-    const Scene shelled = bench::makeSunRoomInASunlitShell(0.25f);
+    const Scene shelled = bench::makeSunRoomInASunlitShell(bench::kShellGap);
     {
         // The premise: the shell lets the same sunlight in (direct light as the sun room's truth).
         RenderSettings settings = *findRenderPreset("balanced");
@@ -214,10 +214,7 @@ TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
     for (const char* preset : {"balanced", "walls"}) {
         RenderSettings settings = *findRenderPreset(preset);
         settings.image.width = settings.image.height = 128;
-        settings.shading.mode = RenderMode::Indirect;
-        Renderer renderer(gpu(), shelled, settings);
-        renderer.renderFrame();
-        const double ratio = bench::meanLuminance(renderer.readImage()) / bench::meanLuminance(truth);
+        const double ratio = bench::measureShelledRoomIndirect(gpu(), settings, truth);
         std::printf("[ shell ] %s: indirect luminance %.3f x the sun room's truth\n", preset, ratio);
         const bool rays = settings.resources.rayVisibility;
         EXPECT_GE(ratio, 0.90) << preset;

@@ -270,39 +270,17 @@ TEST_F(Stress, GrazingViewsStayFiniteAndBounded) {
     }
 }
 
-// The mean luminance seen from the middle of the Cornell box's tall block, whose inner faces no
-// light reaches (the ground truth is black), over the usual view's; and the same direct light alone.
-struct InsideTheBlock {
-    double inside, insideDirect, usual;
-};
-InsideTheBlock seenFromInsideTheTallBlock(const RenderSettings& settings) {
-    Renderer renderer(gpu(), loadScene("cornell"), settings);
-    InsideTheBlock seen{};
-    seen.usual = bench::meanLuminance(render(renderer, "usual view"));
-    Camera camera = renderer.camera();
-    camera.position = glm::vec3(0.368f, 0.2f, 0.351f);  // the middle of the tall block
-    camera.forward = glm::vec3(0.0f, 0.0f, 1.0f);
-    camera.znear = 0.001f;
-    renderer.setCamera(camera);
-    seen.inside = bench::meanLuminance(render(renderer, "inside the block", false));
-    ShadingSettings direct = settings.shading;
-    direct.mode = RenderMode::Direct;
-    renderer.setShading(direct);
-    seen.insideDirect = bench::meanLuminance(render(renderer, "inside the block, direct", false));
-    return seen;
-}
-
 TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight) {
     // The shadow maps get the block's inside right; the cones do not: the block's faces are thinner
     // than a voxel, and cones starting on their inner side see the lit outer side's voxels (the
     // light leak of FailureModes.ThinWallsLeak…, at its worst in a closed box), and one-sided voxels
     // are transparent from behind. Bounded (kTolerances.insideGeometry) so that it cannot grow
     // unnoticed; ray visibility (below) is what meets the target.
-    const InsideTheBlock seen = seenFromInsideTheTallBlock(smallSettings(32, 64));
-    std::printf("[ stress ] inside the tall block: %.5f, direct %.5f (usual view %.4f)\n", seen.inside,
-                seen.insideDirect, seen.usual);
+    const bench::InsideClosedBlock seen = bench::measureInsideClosedBlock(gpu(), smallSettings(32, 64));
+    std::printf("[ stress ] inside the tall block: %.5f, direct %.5f (usual view %.4f)\n", seen.insideLuminance,
+                seen.insideDirect, seen.usualLuminance);
     EXPECT_EQ(seen.insideDirect, 0.0);
-    EXPECT_LE(seen.inside, kTolerances.insideGeometry * seen.usual);
+    EXPECT_LE(seen.ratio(), kTolerances.insideGeometry);
 }
 
 TEST_F(Stress, WithRayVisibilityACameraInsideAClosedBlockSeesUnderFivePercentOfTheRoomsLight) {
@@ -310,11 +288,11 @@ TEST_F(Stress, WithRayVisibilityACameraInsideAClosedBlockSeesUnderFivePercentOfT
     RenderSettings settings = smallSettings(32, 64);
     settings.resources.rayVisibility = true;
     settings.shading.diffuseConeAperture = findRenderPreset("walls")->shading.diffuseConeAperture;
-    const InsideTheBlock seen = seenFromInsideTheTallBlock(settings);
-    std::printf("[ stress ] rays, inside the tall block: %.5f, direct %.5f (usual view %.4f): %.4f\n", seen.inside,
-                seen.insideDirect, seen.usual, seen.inside / seen.usual);
+    const bench::InsideClosedBlock seen = bench::measureInsideClosedBlock(gpu(), settings);
+    std::printf("[ stress ] rays, inside the tall block: %.5f, direct %.5f (usual view %.4f): %.4f\n",
+                seen.insideLuminance, seen.insideDirect, seen.usualLuminance, seen.ratio());
     EXPECT_EQ(seen.insideDirect, 0.0);
-    EXPECT_LE(seen.inside, 0.05 * seen.usual);
+    EXPECT_LE(seen.ratio(), 0.05);
 }
 
 TEST_F(Stress, EveryVoxelResolutionFrom32To256RendersFinite) {
