@@ -65,7 +65,7 @@ void gatherVoxel(ivec3 voxel) {
     vec3 normal = normalSum / max(normalLength, 1e-6f);
     if (normalLength > 0.25f && coneStartIsClear(voxel, normal)) {
         vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
-        float voxelSize = frame.grid.originVoxelSize.w;
+        float voxelSize = frame.grid.voxelSize;
         // Lambertian: albedo/π · (π Σ wᵢ Lᵢ).
         vec3 gathered = traceDiffuseConeSet(center + normal * (BOUNCE_CONE_START * voxelSize), normal, BOUNCE_CONE_START,
                                             max(frame.diffuseConeCount, MIN_BOUNCE_CONES))

@@ -20,7 +20,7 @@ const float FACING_BACK = -0.5f;
 // The gap is probed every half voxel from one voxel out.
 vec4 surfaceAcrossTheGap(vec3 position, vec3 normal) {
     VoxelGridParams grid = frame.grid;
-    ivec3 last = ivec3(grid.resolution.x) - 1;
+    ivec3 last = ivec3(grid.resolution) - 1;
     vec3 start = worldToGrid(grid, position);
     // How far from a plane through `position` a voxel's centre can lie and the plane still touch it.
     float ownReach = 0.5f * (abs(normal.x) + abs(normal.y) + abs(normal.z));

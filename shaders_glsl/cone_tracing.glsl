@@ -22,7 +22,7 @@
 // faces outwards, and the Cornell box's open front, closed by its walls' stretched edges, read
 // 1.45x its indirect light.
 vec3 clearOfTheBorder(vec3 uvw, float lod) {
-    float coarserTexels = max(float(frame.grid.resolution.x) / exp2(floor(lod) + 1.0f), 1.0f);
+    float coarserTexels = max(float(frame.grid.resolution) / exp2(floor(lod) + 1.0f), 1.0f);
     vec3 inset = vec3(0.5f / coarserTexels);
     bool inside = all(greaterThanEqual(uvw, vec3(0.0f))) && all(lessThanEqual(uvw, vec3(1.0f)));
     return inside ? clamp(uvw, inset, 1.0f - inset) : uvw;
@@ -48,7 +48,7 @@ vec4 sampleVoxels(vec3 uvw, float lod, ChainRead chain, vec3 direction, bool ble
     if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
     vec3 directionalLod = max(chain.lod - 1.0f, vec3(0.0f));
     vec3 weight = direction * direction;
-    vec3 ahead = chain.ahead / float(frame.grid.resolution.x);
+    vec3 ahead = chain.ahead / float(frame.grid.resolution);
     vec3 uvwX = uvw + vec3(ahead.x, 0.0f, 0.0f), uvwY = uvw + vec3(0.0f, ahead.y, 0.0f),
          uvwZ = uvw + vec3(0.0f, 0.0f, ahead.z);
     // The chain facing the direction, by coordinate: one fetch per axis (directional_chains.h).
@@ -258,7 +258,7 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     VoxelGridParams grid = frame.grid;
     ConeSetup cone = ConeSetup(worldToGrid(grid, origin), direction, tanHalfAperture, startHeight, heightRate,
                                frame.coneStep, frame.coneMaxDistance, frame.coneStopOpacity, frame.aoFalloff,
-                               float(grid.resolution.x), float(grid.resolution.y - 1u), NO_HIT);
+                               float(grid.resolution), float(grid.mipLevels - 1u), NO_HIT);
     // With ray visibility the march ends where its axis meets a surface.
     if ((frame.componentFlags & RAY_VISIBILITY) != 0u) {
         cone.hitDistance = firstSurfaceDistance(cone.start + 0.5f * direction, direction, cone.maxDistance,

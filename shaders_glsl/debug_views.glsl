@@ -19,8 +19,8 @@ vec3 voxelView(ivec2 pixel, uint view, float mip) {
     direction = mix(direction, vec3(1e-7f), lessThan(abs(direction), vec3(1e-7f)));
     int level = view == DEBUG_VOXEL_RADIANCE ? int(mip) : 0;
     float texel = exp2(float(level));
-    int size = max(int(frame.grid.resolution.x) >> level, 1);
-    float resolution = float(frame.grid.resolution.x);
+    int size = max(int(frame.grid.resolution) >> level, 1);
+    float resolution = float(frame.grid.resolution);
 
     // Where the ray enters the grid's box (slab test), and through which face.
     vec3 inverse = 1.0f / direction;
@@ -67,8 +67,8 @@ vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
         // Distance from the camera, 0 at the nearest point of the voxel grid's box (which holds the
         // scene) and 1 at its farthest corner, so the scene spans the whole range wherever the
         // camera is (over the grid's side, a camera outside the scene saw nearly all white).
-        vec3 boxMin = frame.grid.originVoxelSize.xyz;
-        vec3 boxMax = boxMin + vec3(frame.grid.originVoxelSize.w * float(frame.grid.resolution.x));
+        vec3 boxMin = frame.grid.origin;
+        vec3 boxMax = boxMin + vec3(frame.grid.voxelSize * float(frame.grid.resolution));
         vec3 camera = frame.cameraPosition;
         float nearest = length(max(max(boxMin - camera, camera - boxMax), vec3(0.0f)));
         float farthest = length(max(abs(boxMin - camera), abs(boxMax - camera)));
@@ -77,7 +77,7 @@ vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
     }
     // Ambient occlusion, 1 = open, 0 = fully occluded: the cones' times the material's occlusion
     // texture, both of which scale the indirect light.
-    vec3 origin = positionMaterial.xyz + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
+    vec3 origin = positionMaterial.xyz + normal * (frame.coneStartOffset * frame.grid.voxelSize);
     float cones = 1.0f - traceDiffuseCones(origin, normal, frame.coneStartOffset).a;
     return vec3(cones * gbufferOcclusion(normalSide.w));
 }

@@ -59,7 +59,7 @@ VoxelSurface voxelSurface(ivec3 voxel) {
     surface.sided = surface.normalLength > 0.25f;
     surface.point = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
     if (surface.sided)
-        surface.point += surface.normalSum * (normalOffset.w * frame.grid.originVoxelSize.w / surface.normalLength);
+        surface.point += surface.normalSum * (normalOffset.w * frame.grid.voxelSize / surface.normalLength);
     return surface;
 }
 
@@ -79,7 +79,7 @@ vec3 facingNormal(VoxelSurface surface, vec3 toLight) {
 }
 
 vec3 shadowLookupPoint(VoxelSurface surface, vec3 normal) {
-    return surface.sided ? surface.point : surface.point + normal * (0.5f * frame.grid.originVoxelSize.w);
+    return surface.sided ? surface.point : surface.point + normal * (0.5f * frame.grid.voxelSize);
 }
 
 // An area light's irradiance at a voxel. Linear in the normal too, where the light is above the

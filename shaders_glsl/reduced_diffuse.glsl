@@ -75,7 +75,7 @@ TexelQuad fetchQuad(sampler2D light, sampler2D positions, sampler2D normals, ive
 
 // The blend of a quad at `fraction` of the way from its first texel to its last.
 SurfaceBlend blendQuad(TexelQuad quad, vec2 fraction, vec3 position, vec3 normal) {
-    float voxelSize = frame.grid.originVoxelSize.w;
+    float voxelSize = frame.grid.voxelSize;
     SurfaceBlend blend = SurfaceBlend(vec4(0.0f), 0.0f);
     for (int i = 0; i < 4; ++i) {
         vec4 sourcePosition = quad.positions[i];
@@ -127,7 +127,7 @@ bool lastLight(mat4 lastViewProjection, sampler2D light, sampler2D positions, sa
 vec4 gatherDiffuse(vec3 position, vec3 normal) {
     vec4 across = surfaceAcrossTheGap(position, normal);
     if (across.a > 0.0f) return across;
-    vec3 origin = position + normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
+    vec3 origin = position + normal * (frame.coneStartOffset * frame.grid.voxelSize);
     return traceDiffuseCones(origin, normal, frame.coneStartOffset);
 }
 #endif

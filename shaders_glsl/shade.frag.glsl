@@ -95,7 +95,7 @@ vec3 indirectLight(SurfacePoint surface, ivec2 pixel, uint flags) {
     // Skip the specular cone where the material reflects (almost) nothing specularly.
     if (TRACES_SPECULAR_CONE && reflects && !reflectsDiffuseLight) {
         // Like the diffuse cones, it starts a little off the surface, clear of its own voxels.
-        vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.originVoxelSize.w);
+        vec3 origin = surface.position + surface.normal * (frame.coneStartOffset * frame.grid.voxelSize);
         vec3 reflected = reflect(-surface.toViewer, surface.normal);
         vec4 across = surfaceAcrossTheGap(surface.position, surface.normal);
         radiance += specularAlbedo * (across.a > 0.0f ? across.rgb

@@ -9,16 +9,20 @@
 VCT_SHARED_BEGIN
 
 struct VoxelGridParams {
-    vec4 originVoxelSize;  // xyz world position of the grid's min corner, w world size of one voxel
-    uvec4 resolution;      // x voxels per side, y mip levels, z triangles, w work items (triangle tiles)
+    vec3 origin;         // world position of the grid's min corner
+    float voxelSize;     // world size of one voxel
+    uint resolution;     // voxels per side
+    uint mipLevels;      // of the radiance volume
+    uint triangleCount;  // the voxelizer's: the scene's triangles (0 elsewhere)
+    uint workItems;      // the voxelizer's: the triangle tiles its dispatch covers (0 elsewhere)
 };
 
 SHARED_FN vec3 worldToGrid(VoxelGridParams grid, vec3 world) {
-    return (world - vec3(grid.originVoxelSize)) / grid.originVoxelSize.w;
+    return (world - grid.origin) / grid.voxelSize;
 }
 
 SHARED_FN vec3 gridToWorld(VoxelGridParams grid, vec3 gridPosition) {
-    return vec3(grid.originVoxelSize) + gridPosition * grid.originVoxelSize.w;
+    return grid.origin + gridPosition * grid.voxelSize;
 }
 
 // A cell of the grid (a voxel, or a tile of voxels) packed 10 bits per axis: up to 1024 cells a side.

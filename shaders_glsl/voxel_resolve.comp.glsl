@@ -37,7 +37,7 @@ vec3 channelMean(uint first, uint index, float divisor, bool isSigned) {
 
 void main() {
     uvec3 voxel = gl_GlobalInvocationID;
-    uint resolution = params.grid.resolution.x;
+    uint resolution = params.grid.resolution;
     if (any(greaterThanEqual(voxel, uvec3(resolution)))) return;
     uint index = voxel.x + resolution * (voxel.y + resolution * voxel.z);
     uint count = accumulation[ACCUM_COUNT].values[index];

@@ -158,8 +158,8 @@ uint toFixed(float value, float scale) { return uint(int(floor(value * scale + 0
 
 void main() {
     uint item = gl_WorkGroupID.y * params.dispatch.x + gl_WorkGroupID.x;
-    if (item >= params.grid.resolution.w) return;
-    uint resolution = params.grid.resolution.x;
+    if (item >= params.grid.workItems) return;
+    uint resolution = params.grid.resolution;
     uvec2 work = workItems[item];
     uvec3 voxel = unpackCell(work.y) * VOXELIZE_TILE + gl_LocalInvocationID;
     uint triangle = work.x;

@@ -89,7 +89,7 @@ SHARED_FN float voxelizationSetback(vec3 unitNormal) {
 }
 
 struct VoxelizeParams {
-    VoxelGridParams grid;  // resolution.w = work items
+    VoxelGridParams grid;  // with its triangleCount and workItems
     vec4 emission;         // x fixed-point scale (EMISSION_FIXED_MAX / largest component, 0 without emitters), y its inverse
     uvec4 dispatch;        // x workgroups per row of the voxelize dispatch (work item = group.y · x + group.x),
                            // y the most workgroups the occupied-voxel dispatch may have,

@@ -168,7 +168,7 @@ InsideClosedBlock measureInsideClosedBlock(GpuContext& context, RenderSettings s
 }
 
 float twoRoomVoxelSize(uint32_t resolution) {
-    return fitVoxelGrid(makeTwoRoomScene(0.0f, SharedWall::TwoFaces).bounds(), resolution).originVoxelSize.w;
+    return fitVoxelGrid(makeTwoRoomScene(0.0f, SharedWall::TwoFaces).bounds(), resolution).voxelSize;
 }
 
 Scene makeLonePlaneScene() {

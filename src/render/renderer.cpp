@@ -182,7 +182,7 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     const glm::vec3 sky = environment_ * skyMean_;
     brightest.emission = glm::vec3(std::max({brightestEmission_, sky.r, sky.g, sky.b}));
     emitters.materials.push_back(brightest);
-    radianceScale_ = radianceStorageScale(all, emitters, grid_.originVoxelSize.w);
+    radianceScale_ = radianceStorageScale(all, emitters, grid_.voxelSize);
     stale_.shadows = true;
     stale_.radiance = true;
 }
@@ -237,7 +237,7 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.shadowNormalOffset = shading.shadowNormalOffset;
     constants.pcfRadius = shading.pcfRadius;
     constants.radianceScale = radianceScale_;
-    const float resolution = float(grid_.resolution.x);
+    const float resolution = float(grid_.resolution);
     constants.grid = grid_;
     constants.coneTanHalfAperture = std::tan(glm::radians(0.5f * shading.diffuseConeAperture));
     constants.coneStep = shading.coneStep;

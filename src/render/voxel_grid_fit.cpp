@@ -23,8 +23,10 @@ glsl::VoxelGridParams fitVoxelGrid(const Bounds& sceneBounds, uint32_t resolutio
     side *= float(resolution) / (float(resolution) - 2.0f * margin);
     glsl::VoxelGridParams grid{};
     const float voxelSize = side / float(resolution);
-    grid.originVoxelSize = glm::vec4(sceneBounds.center() - glm::vec3(0.5f * side), voxelSize);
-    grid.resolution = glm::uvec4(resolution, voxelMipCount(resolution), 0u, 0u);
+    grid.origin = sceneBounds.center() - glm::vec3(0.5f * side);
+    grid.voxelSize = voxelSize;
+    grid.resolution = resolution;
+    grid.mipLevels = voxelMipCount(resolution);
     return grid;
 }
 

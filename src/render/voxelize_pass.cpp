@@ -128,7 +128,7 @@ uint64_t fewestWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
         const glm::dvec3 low = glm::min(triangle[0], glm::min(triangle[1], triangle[2]));
         const glm::dvec3 high = glm::max(triangle[0], glm::max(triangle[1], triangle[2]));
         if (glm::any(glm::lessThan(low, glm::dvec3(0.0))) ||
-            glm::any(glm::greaterThan(high, glm::dvec3(grid.resolution.x))))
+            glm::any(glm::greaterThan(high, glm::dvec3(grid.resolution))))
             continue;
         const glm::dvec3 normal = glm::abs(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
         total += std::floor(0.5 * std::max({normal.x, normal.y, normal.z}) / tileArea);
@@ -140,7 +140,7 @@ uint64_t fewestWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
 
 std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::vector<uint32_t>& order,
                                                const glsl::VoxelGridParams& grid, uint64_t maxItems) {
-    const uint32_t resolution = grid.resolution.x;
+    const uint32_t resolution = grid.resolution;
     const int tile = int(glsl::VOXELIZE_TILE);
     const double halfTile = 0.5 * tile;
     const uint64_t fewest = fewestWorkItems(scene, order, grid);
@@ -193,7 +193,7 @@ std::vector<glm::uvec2> buildVoxelizeWorkItems(const Scene& scene, const std::ve
 VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneGpu& sceneGpu,
                            const glsl::VoxelGridParams& grid, uint64_t maxChunkItems)
     : context_(context) {
-    const uint32_t resolution = grid.resolution.x;
+    const uint32_t resolution = grid.resolution;
     if (resolution == 0 || resolution % glsl::VOXELIZE_TILE != 0 || resolution > 1024 * glsl::VOXELIZE_TILE)
         throw Error("the voxelizer needs a resolution that is a multiple of 4, up to 4096, not " +
                     std::to_string(resolution));
@@ -214,8 +214,8 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
                 std::max({largestEmission, material.emission.x, material.emission.y, material.emission.z});
     }
     params.grid = grid;
-    params.grid.resolution.z = uint32_t(scene.triangleCount());
-    params.grid.resolution.w = uint32_t(items.size());
+    params.grid.triangleCount = uint32_t(scene.triangleCount());
+    params.grid.workItems = uint32_t(items.size());
     if (largestEmission > 0.0f)
         params.emission = glm::vec4(glsl::EMISSION_FIXED_MAX / largestEmission,
                                     largestEmission / glsl::EMISSION_FIXED_MAX, 0.0f, 0.0f);
@@ -253,7 +253,7 @@ std::vector<VkBuffer> VoxelizePass::accumulationBuffers() const {
 }
 
 void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, VoxelVolumes& volumes) {
-    const uint32_t resolution = params.grid.resolution.x;
+    const uint32_t resolution = params.grid.resolution;
     // The previous frame's resolve may still read the sums: wait for it before clearing.
     memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                   VK_ACCESS_2_NONE);
@@ -290,7 +290,7 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
             .buffers(5, accumulationBuffers())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline);
         glsl::VoxelizeParams chunkParams = params;
-        chunkParams.grid.resolution.w = chunk.count;
+        chunkParams.grid.workItems = chunk.count;
         chunkParams.dispatch.x = chunk.groupsPerRow;
         vkCmdPushConstants(commands, voxelizePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(chunkParams),
                            &chunkParams);

@@ -65,7 +65,7 @@ struct VoxelizePass {
     // normal, emission), visible to later compute and fragment shader reads (sampled or storage).
     void record(VkCommandBuffer commands, const SceneGpu& sceneGpu, VoxelVolumes& volumes);
 
-    glsl::VoxelizeParams params{};                          // grid.resolution.z = triangles, .w = work items
+    glsl::VoxelizeParams params{};                          // its grid with triangleCount and workItems
     std::array<Buffer, glsl::ACCUM_CHANNELS> accumulation;  // uint per voxel each, cleared every record
     // The work items, uvec2 (triangle, packed tile), in chunks of one buffer and one dispatch each.
     struct WorkChunk {

@@ -10,7 +10,7 @@
 namespace vct {
 
 glm::dvec3 toGridCoordinates(const glsl::VoxelGridParams& grid, const glm::vec3& world) {
-    return (glm::dvec3(world) - glm::dvec3(glm::vec3(grid.originVoxelSize))) / double(grid.originVoxelSize.w);
+    return (glm::dvec3(world) - glm::dvec3(grid.origin)) / double(grid.voxelSize);
 }
 
 TriangleD gridTriangle(const Scene& scene, const glsl::VoxelGridParams& grid, size_t triangle) {
@@ -79,7 +79,7 @@ VoxelRange triangleVoxelRange(const TriangleD& triangle, uint32_t resolution, do
 
 VoxelReference voxelizeReference(const Scene& scene, const glsl::VoxelGridParams& grid) {
     VoxelReference result;
-    const uint32_t n = grid.resolution.x;
+    const uint32_t n = grid.resolution;
     result.resolution = n;
     const size_t voxels = size_t(n) * n * n;
     result.count.assign(voxels, 0);

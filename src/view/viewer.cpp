@@ -564,7 +564,7 @@ UiFacts Viewer::facts() const {
     facts.height = swapchain_->extent.height;
     facts.renderWidth = renderer_->settings().image.width;
     facts.renderHeight = renderer_->settings().image.height;
-    facts.voxelResolution = renderer_->voxelGrid().resolution.x;
+    facts.voxelResolution = renderer_->voxelGrid().resolution;
     facts.voxelMips = renderer_->volumes().radiance.desc.mipLevels;
     facts.deviceMemoryBytes = renderer_->deviceMemoryBytes();
     facts.triangles = scene_.triangleCount();
@@ -591,8 +591,8 @@ void Viewer::writeScreenshot(const Buffer& pixels, VkExtent2D extent, const std:
 glsl::GridBoundsPush Viewer::gridBoundsPush() const {
     const glsl::VoxelGridParams& grid = renderer_->voxelGrid();
     Bounds box;
-    box.min = glm::vec3(grid.originVoxelSize);
-    box.max = box.min + float(grid.resolution.x) * grid.originVoxelSize.w;
+    box.min = grid.origin;
+    box.max = box.min + float(grid.resolution) * grid.voxelSize;
     Camera camera = renderer_->camera();
     camera.position -= renderer_->sceneOrigin();
     const ImageSettings& image = renderer_->settings().image;

@@ -325,8 +325,12 @@ TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
                      });
     expectSameLayout(shade, "VoxelGridParams",
                      {
-                         MEMBER(VoxelGridParams, originVoxelSize),
+                         MEMBER(VoxelGridParams, origin),
+                         MEMBER(VoxelGridParams, voxelSize),
                          MEMBER(VoxelGridParams, resolution),
+                         MEMBER(VoxelGridParams, mipLevels),
+                         MEMBER(VoxelGridParams, triangleCount),
+                         MEMBER(VoxelGridParams, workItems),
                      });
     expectSameLayout(shade, "GpuMaterial",
                      {

@@ -41,8 +41,10 @@ protected:
         volumes = std::make_unique<VoxelVolumes>(gpu(), ResourceSettings{.voxelResolution = kResolution});
         voxels.assign(size_t(kResolution) * kResolution * kResolution, glm::vec4(0.0f));
         // The grid spans [0, 64]³ in world units: one voxel = one unit.
-        grid.originVoxelSize = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-        grid.resolution = glm::uvec4(kResolution, voxelMipCount(kResolution), 0, 0);
+        grid.origin = glm::vec3(0.0f, 0.0f, 0.0f);
+        grid.voxelSize = 1.0f;
+        grid.resolution = kResolution;
+        grid.mipLevels = voxelMipCount(kResolution);
     }
 
     const GpuImage& volume() const { return volumes->radiance; }

@@ -52,7 +52,7 @@ std::vector<glm::vec4> injectedLight(const Scene& scene) {
     settings.resources.voxelResolution = kResolution;
     settings.resources.bounces = 1;
     Renderer renderer(gpu(), scene, settings);
-    EXPECT_NEAR(fitVoxelGrid(scene.bounds(), kResolution).originVoxelSize.w, 0.1f, 1e-6f);
+    EXPECT_NEAR(fitVoxelGrid(scene.bounds(), kResolution).voxelSize, 0.1f, 1e-6f);
     renderer.renderFrame();
     return readImage3D(gpu(), renderer.volumes().radiance, 0, VK_IMAGE_LAYOUT_GENERAL);
 }

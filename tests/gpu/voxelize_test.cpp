@@ -75,8 +75,10 @@ Scene makeScene(const std::vector<TriangleF>& triangles, const std::vector<uint3
 // Origin 0 and a power-of-two voxel size: grid coordinates are exact in float.
 glsl::VoxelGridParams exactGrid(uint32_t resolution, float voxelSize = 1.0f) {
     glsl::VoxelGridParams grid{};
-    grid.originVoxelSize = glm::vec4(0.0f, 0.0f, 0.0f, voxelSize);
-    grid.resolution = glm::uvec4(resolution, 1u, 0u, 0u);
+    grid.origin = glm::vec3(0.0f, 0.0f, 0.0f);
+    grid.voxelSize = voxelSize;
+    grid.resolution = resolution;
+    grid.mipLevels = 1u;
     return grid;
 }
 
@@ -94,7 +96,7 @@ VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid,
     GpuContext& context = test::gpu();
     SceneGpu sceneGpu(context, scene);
     VoxelizePass pass(context, scene, sceneGpu, grid, maxChunkItems);
-    VoxelVolumes volumes(context, ResourceSettings{.voxelResolution = grid.resolution.x, .anisotropicVoxels = false});
+    VoxelVolumes volumes(context, ResourceSettings{.voxelResolution = grid.resolution, .anisotropicVoxels = false});
     GpuTimer timer(context);
     for (int run = 0; run <= timedRuns; ++run)  // run 0 warms up, the last one is timed
         submitAndWait(context, [&](VkCommandBuffer commands) {
@@ -110,7 +112,7 @@ VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid,
     const std::vector<uint32_t> header = readBufferWords(context, volumes.occupiedDispatch, 4);
     std::memcpy(&images.occupiedDispatch, header.data(), sizeof(images.occupiedDispatch));
     images.occupied = readBufferWords(context, volumes.occupiedVoxels, images.occupiedDispatch.count);
-    images.workItems = pass.params.grid.resolution.w;
+    images.workItems = pass.params.grid.workItems;
     images.chunks = pass.workChunks.size();
     images.times = timer.results();
     return images;
@@ -199,7 +201,7 @@ void expectMatchesTwin(const Scene& scene, const glsl::VoxelGridParams& grid, do
     const VoxelImages gpu = voxelizeOnGpu(scene, grid);
     const VoxelReference twin = voxelizeReference(scene, grid);
     const Comparison comparison = compareWithTwin(gpu, twin, ambiguousMargin, largestEmission);
-    expectOccupiedListMatchesTheImages(gpu, grid.resolution.x);
+    expectOccupiedListMatchesTheImages(gpu, grid.resolution);
     EXPECT_GT(comparison.occupied, 0u);
     EXPECT_EQ(comparison.mismatches, 0u) << comparison.firstMismatch;
     EXPECT_LE(double(comparison.ambiguous), kMaxAmbiguousFraction * double(comparison.occupied))
@@ -209,7 +211,7 @@ void expectMatchesTwin(const Scene& scene, const glsl::VoxelGridParams& grid, do
 // An independent check of conservativeness: the voxel holding any point of the triangle, set back
 // as the voxelizer marks it (voxelizationSetback), is marked.
 void expectSampledPointsMarked(const Scene& scene, const glsl::VoxelGridParams& grid, const VoxelImages& gpu) {
-    const int n = int(grid.resolution.x);
+    const int n = int(grid.resolution);
     size_t missed = 0;
     for (size_t t = 0; t < scene.triangleCount(); ++t) {
         if (isDegenerateTriangle(scene, t)) continue;
@@ -260,8 +262,10 @@ TEST_F(Voxelize, RandomTrianglesMatchTheCpuTwinVoxelForVoxel) {
                   {{{0.9f, 0.1f, 0.1f}, {}}, {{0.1f, 0.9f, 0.2f}, {2.0f, 1.0f, 0.0f}}, {glm::vec3(0.5f), {}}});
     // A grid whose origin and voxel size are not exact in float: conversion rounds differently.
     glsl::VoxelGridParams grid{};
-    grid.originVoxelSize = glm::vec4(-0.3f, -0.2f, -0.1f, 0.11f);
-    grid.resolution = glm::uvec4(32, 1, 0, 0);
+    grid.origin = glm::vec3(-0.3f, -0.2f, -0.1f);
+    grid.voxelSize = 0.11f;
+    grid.resolution = 32;
+    grid.mipLevels = 1;
     expectMatchesTwin(scene, grid, kAmbiguousMargin, 2.0f);
     expectSampledPointsMarked(scene, grid, voxelizeOnGpu(scene, grid));
 }
@@ -338,7 +342,7 @@ std::vector<glm::uvec2> everyTouchedTile(const Scene& scene, const glsl::VoxelGr
     for (uint32_t t = 0; t < scene.triangleCount(); ++t) {
         if (isDegenerateTriangle(scene, t)) continue;
         const TriangleD triangle = setBackTriangle(gridTriangle(scene, grid, t));
-        const VoxelRange range = triangleVoxelRange(triangle, grid.resolution.x, 1e-3);
+        const VoxelRange range = triangleVoxelRange(triangle, grid.resolution, 1e-3);
         if (range.empty()) continue;
         const glm::ivec3 first = range.first / 4, last = range.last / 4;
         for (int z = first.z; z <= last.z; ++z)
@@ -827,7 +831,7 @@ TEST_F(Voxelize, CornellBoxMatchesTheCpuTwin) {
                   << 100.0 * double(fitted.occupied.size()) / double(fitted.albedoOpacity.size())
                   << " % of the grid)\n";
 
-        grid.originVoxelSize -= glm::vec4(glm::vec3(0.37f * grid.originVoxelSize.w), 0.0f);
+        grid.origin -= glm::vec3(0.37f * grid.voxelSize);
         const Comparison shifted =
             compareWithTwin(voxelizeOnGpu(scene, grid), voxelizeReference(scene, grid), kAmbiguousMargin);
         EXPECT_EQ(shifted.mismatches, 0u) << resolution << ": " << shifted.firstMismatch;
