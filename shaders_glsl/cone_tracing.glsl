@@ -174,11 +174,12 @@ ChainRead chainReads(float lod, float distance, ConeSetup cone) {
     return ChainRead(level, sign(cone.direction) * ahead);
 }
 
-// With ray visibility, whether a sample lies behind the surfaces in its footprint (their planes,
-// surface_planes.h, weighted by opacity): where they mostly agree on a side (a mean normal at
-// least SIDED_AGREEMENT long; the two faces of a wall, or a block's, cancel) and the sample lies
-// more than BEHIND_MARGIN voxels behind them on average. It then sees their backs, which hold no
-// light, whatever the directional chains show to rays entering their texels from elsewhere.
+// With ray visibility, whether a sample lies behind the lit surfaces in its footprint (their
+// planes, surface_planes.h, weighted by their light): where they mostly agree on a side (a mean
+// normal at least SIDED_AGREEMENT long; the two faces of a wall, or a block's, cancel) and the
+// sample lies more than BEHIND_MARGIN voxels behind them on average. It then sees their backs,
+// which hold no light, whatever the directional chains show to rays entering their texels from
+// elsewhere. A margin of 0 darkened the lit room by 9 % (samples beside lit surfaces).
 const float SIDED_AGREEMENT = 0.5f;
 const float BEHIND_MARGIN = 0.125f;
 bool behindSurfaces(vec3 uvw, float lod, vec3 position, float resolution) {
@@ -290,8 +291,12 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
     else if (!march.leftGrid && march.distance >= cone.hitDistance) {
         vec3 hitPoint = cone.start + direction * (cone.hitDistance + 1e-3f);
         float hitLod = clamp(log2(max(1.0f, 2.0f * tanHalfAperture * cone.hitDistance)), 0.0f, cone.maxLod);
+        // Where the footprint's light lies behind the ray's last free point (a sunlit shell beside
+        // the room's wall it hit), the hit is read up to four levels finer, down to its own surface.
         vec3 beforeHit = cone.start + direction * max(cone.hitDistance - 0.5f, 0.0f);
-        for (int k = 0; k < 4 && hitLod > 0.0f && behindSurfaces(hitPoint / cone.resolution, hitLod, beforeHit, cone.resolution); ++k)
+        for (int k = 0; k < 4 && hitLod > 0.0f &&
+                        behindSurfaces(hitPoint / cone.resolution, hitLod, beforeHit, cone.resolution);
+             ++k)
             hitLod = max(hitLod - 1.0f, 0.0f);
         vec4 hit = sampleVoxels(hitPoint / cone.resolution, hitLod, ChainRead(vec3(hitLod), vec3(0.0f)), direction, true);
         vec3 hitNormal = voxelNormalAt(ivec3(floor(hitPoint)));

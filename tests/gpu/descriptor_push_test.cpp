@@ -1,7 +1,9 @@
 // Descriptor writes are checked against the bindings the pipeline's shaders declare: a write to a
 // slot the shaders do not have, or of another type or array size, is an error that names the
-// shaders and the binding before anything is recorded.
+// shaders and the binding before anything is recorded. (Every pass's writes, which match, are
+// pushed by the other GPU tests.)
 #include <string>
+#include <vector>
 
 #include "error.h"
 #include "gpu/pipelines.h"
@@ -13,10 +15,14 @@ namespace {
 
 class DescriptorPushTest : public GpuTest {};
 
-// The message of the Error that pushing `writes` for `pipeline` throws ("" if none).
-std::string pushError(DescriptorPush& writes, const Pipeline& pipeline) {
+// The message of the Error that pushing `count` storage-buffer descriptors to `binding` of the
+// pipeline of `shader` throws ("" if none). A mismatch throws before the command buffer is touched.
+std::string storageBufferWriteError(const char* shader, uint32_t binding, size_t count) {
+    const Pipeline pipeline = createComputePipeline(gpu(), shader);
+    const Buffer buffer(gpu(), 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+    DescriptorPush writes;
+    writes.buffers(binding, std::vector<VkBuffer>(count, buffer.buffer));
     try {
-        // A mismatch throws before the command buffer is touched.
         writes.push(gpu(), VK_NULL_HANDLE, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     } catch (const Error& error) {
         return error.what();
@@ -25,34 +31,22 @@ std::string pushError(DescriptorPush& writes, const Pipeline& pipeline) {
 }
 
 TEST_F(DescriptorPushTest, AWriteOfTheWrongTypeNamesTheShaderAndTheBinding) {
-    // mips.comp.glsl: binding 0 and 1 are storage images.
-    const Pipeline mips = createComputePipeline(gpu(), "mips.comp");
-    const Buffer buffer(gpu(), 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-    DescriptorPush writes;
-    writes.buffer(1, buffer.buffer);
-    const std::string message = pushError(writes, mips);
+    // mips.comp.glsl: bindings 0 and 1 are storage images.
+    const std::string message = storageBufferWriteError("mips.comp", 1, 1);
     EXPECT_NE(message.find("mips.comp"), std::string::npos) << message;
     EXPECT_NE(message.find("binding 1 is a storage image"), std::string::npos) << message;
     EXPECT_NE(message.find("written as a storage buffer"), std::string::npos) << message;
 }
 
 TEST_F(DescriptorPushTest, AWriteToASlotTheShaderDoesNotDeclareIsAnError) {
-    const Pipeline mips = createComputePipeline(gpu(), "mips.comp");
-    const Buffer buffer(gpu(), 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-    DescriptorPush writes;
-    writes.buffer(7, buffer.buffer);
-    const std::string message = pushError(writes, mips);
+    const std::string message = storageBufferWriteError("mips.comp", 7, 1);
     EXPECT_NE(message.find("mips.comp: binding 7"), std::string::npos) << message;
     EXPECT_NE(message.find("declare no such binding"), std::string::npos) << message;
 }
 
 TEST_F(DescriptorPushTest, MoreArrayElementsThanTheShaderDeclaresIsAnError) {
     // diffuse_trace_list.comp.glsl: binding 2 is one storage buffer (the listed samples).
-    const Pipeline trace = createComputePipeline(gpu(), "diffuse_trace_list.comp");
-    const Buffer buffer(gpu(), 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-    DescriptorPush writes;
-    writes.buffers(2, {buffer.buffer, buffer.buffer});
-    const std::string message = pushError(writes, trace);
+    const std::string message = storageBufferWriteError("diffuse_trace_list.comp", 2, 2);
     EXPECT_NE(message.find("binding 2 holds 1 descriptor(s), written with 2"), std::string::npos) << message;
 }
 
