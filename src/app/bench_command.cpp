@@ -222,6 +222,14 @@ int runBench(const std::vector<std::string>& rawArguments) {
         const bench::FailureModeReport report = bench::measureFailureModes(
             context, settings, truths, sunRoom != info.references.end() ? &sunRoom->second.indirect : nullptr);
         outputs.emplace_back(outDir + "/failure_modes.json", bench::failureModesJson(report));
+        // What each room's camera saw beside each kind of wall on a voxel boundary, to look at.
+        for (const bench::FailureModeReport::Leak& leak : report.leaks)
+            if (leak.wallOffsetVoxels == 0.0f)
+                for (const auto& [room, image] :
+                     {std::pair{"lit", &leak.measurement.litRoom}, std::pair{"dark", &leak.measurement.darkRoom}})
+                    outputs.emplace_back(
+                        outDir + "/leak-" + bench::sharedWallName(leak.wall) + "-" + room + "-room.pfm",
+                        pfmBytes(*image));
         progress.hideWhile([&] { std::printf("\n%s", bench::failureModesText(report).c_str()); });
         for (const bench::ResolutionLuminance& r : report.drift)
             if (!r.finite) {

@@ -213,10 +213,12 @@ LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& sett
     LeakMeasurement leak;
     renderer.setCamera(litRoomCamera());
     renderer.renderFrame();
-    leak.litRoomLuminance = meanLuminance(renderer.readImage());
+    leak.litRoom = renderer.readImage();
+    leak.litRoomLuminance = meanLuminance(leak.litRoom);
     renderer.setCamera(darkRoomCamera());
     renderer.renderFrame();
-    leak.darkRoomLuminance = meanLuminance(renderer.readImage());
+    leak.darkRoom = renderer.readImage();
+    leak.darkRoomLuminance = meanLuminance(leak.darkRoom);
     return leak;
 }
 

@@ -48,6 +48,7 @@ Camera darkRoomCamera();
 struct LeakMeasurement {
     double litRoomLuminance = 0.0;   // mean luminance the lit room's camera sees (full light)
     double darkRoomLuminance = 0.0;  // the same in the dark room: the leak (ground truth 0)
+    Image litRoom, darkRoom;         // what the two cameras saw
     // darkRoomLuminance / litRoomLuminance: the leaked share of the light on the other side.
     double leakRatio() const { return litRoomLuminance > 0.0 ? darkRoomLuminance / litRoomLuminance : 0.0; }
 };

@@ -22,15 +22,17 @@ static_assert(std::endian::native == std::endian::little, "PFM writing assumes a
 
 void writeFileAtomically(const std::string& path, const std::string& bytes) { writeFilesAtomically({{path, bytes}}); }
 
-void writePfm(const std::string& path, const Image& image) {
+std::string pfmBytes(const Image& image) {
     std::string bytes = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
     const size_t rowFloats = size_t(image.width) * 3;
     for (uint32_t row = 0; row < image.height; ++row) {
         const float* source = image.rgb.data() + size_t(image.height - 1 - row) * rowFloats;  // bottom row first
         bytes.append(reinterpret_cast<const char*>(source), rowFloats * sizeof(float));
     }
-    writeFileAtomically(path, bytes);
+    return bytes;
 }
+
+void writePfm(const std::string& path, const Image& image) { writeFileAtomically(path, pfmBytes(image)); }
 
 Image readPfm(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

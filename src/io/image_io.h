@@ -25,6 +25,7 @@ inline double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rg
 
 // Writes standard PFM: "PF", little-endian (scale −1), rows bottom-to-top.
 void writePfm(const std::string& path, const Image& image);
+std::string pfmBytes(const Image& image);  // what writePfm writes
 Image readPfm(const std::string& path);
 
 struct DisplayTransform;  // io/display_transform.h
