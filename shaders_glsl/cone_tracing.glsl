@@ -10,6 +10,7 @@
 #include "gpu_types.h"
 #include "perpendicular.glsl"
 #include "sky.glsl"
+#include "surface_planes.h"
 #include "visibility_ray.glsl"
 #include "voxel_grid.h"
 
@@ -183,7 +184,8 @@ ChainRead chainReads(float lod, float distance, ConeSetup cone) {
 const float SIDED_AGREEMENT = 0.5f;
 const float BEHIND_MARGIN = 0.125f;
 bool behindSurfaces(vec3 uvw, float lod, vec3 position, float resolution) {
-    float weight = dot(textureLod(voxelRadiance, uvw, lod).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
+    float weight =
+        SURFACE_PLANE_WEIGHT * dot(textureLod(voxelRadiance, uvw, lod).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
     if (!(weight > 0.0f)) return false;
     vec4 plane = surfacePlaneAt(uvw, lod);
     vec3 meanNormal = plane.xyz / weight;

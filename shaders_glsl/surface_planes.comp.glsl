@@ -2,6 +2,9 @@
 // Level 0 of the surface planes (surface_planes.h) from the voxelizer's normals and surface offsets
 // (voxel_resolve.comp) and the light of radiance level 0; one invocation per voxel, after each
 // injection. The mip chain follows (mips.comp).
+#extension GL_GOOGLE_include_directive : require
+#include "surface_planes.h"
+
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(set = 0, binding = 0, rgba16f) uniform readonly image3D radiance;  // level 0
 layout(set = 0, binding = 1, rgba16f) uniform readonly image3D normalSurface;
@@ -12,7 +15,7 @@ void main() {
     ivec3 size = imageSize(planes);
     if (any(greaterThanEqual(voxel, size))) return;
     vec4 normalOffset = imageLoad(normalSurface, voxel);
-    float weight = dot(imageLoad(radiance, voxel).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
+    float weight = SURFACE_PLANE_WEIGHT * dot(imageLoad(radiance, voxel).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
     vec3 normal = normalOffset.xyz;
     float normalLength = length(normal);
     // The surface point: the offset is along the unit mean normal; relative to the grid's centre,

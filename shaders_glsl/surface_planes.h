@@ -20,6 +20,11 @@ VCT_SHARED_BEGIN
 // The binding of the surface planes (a sampler3D) in every pass that traces cones with rays.
 const uint SURFACE_PLANES_BINDING = 21u;
 
+// The weight of a voxel's plane per unit of its light's luminance as the radiance volume stores it.
+// The brightest voxel stores up to 1024 (radianceStorageScale), and a plane's offset reaches 221
+// voxels at 256³: unscaled, a sunlit wall's weighted offset passed float16's 65504 from 128³ on.
+const float SURFACE_PLANE_WEIGHT = 1.0f / 1024.0f;
+
 VCT_SHARED_END
 
 #endif
