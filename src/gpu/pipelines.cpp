@@ -56,6 +56,8 @@ ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCod
         pipelineName += (pipelineName.empty() ? "" : " + ") + code.name;
     }
     const ShaderReflection merged = mergeStages(stages, pipelineName);
+    ShaderLayout result;
+    result.name = pipelineName;
     std::vector<VkDescriptorSetLayoutBinding> setZero;
     for (const ReflectedBinding& binding : merged.bindings) {
         if (binding.set > laterSets.size())
@@ -66,15 +68,12 @@ ShaderLayout createShaderLayout(GpuContext& context, const std::vector<ShaderCod
             throw Error(pipelineName + ": set 0 binding " + std::to_string(binding.binding) +
                         " is sized by a specialization constant, which a push-descriptor set cannot follow");
         setZero.push_back({binding.binding, binding.type, binding.count, binding.stages, nullptr});
+        result.setZero.push_back(binding);
     }
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     setInfo.bindingCount = uint32_t(setZero.size());
     setInfo.pBindings = setZero.data();
-    ShaderLayout result;
-    result.name = pipelineName;
-    for (const ReflectedBinding& binding : merged.bindings)
-        if (binding.set == 0) result.setZero.push_back(binding);
     VK_CHECK(vkCreateDescriptorSetLayout(context.device, &setInfo, nullptr, &result.setLayout));
 
     std::vector<VkDescriptorSetLayout> sets = {result.setLayout};
@@ -265,18 +264,6 @@ DescriptorPush& DescriptorPush::sampledImages(uint32_t binding, const std::vecto
 }
 
 namespace {
-
-std::string descriptorTypeName(VkDescriptorType type) {
-    switch (type) {
-        case VK_DESCRIPTOR_TYPE_SAMPLER: return "sampler";
-        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "sampled image (with its sampler)";
-        case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "sampled image";
-        case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
-        case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "uniform buffer";
-        case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
-        default: return "descriptor type " + std::to_string(int(type));
-    }
-}
 
 // The write's slot, type and array elements are among what the shaders declare.
 void checkWrite(const VkWriteDescriptorSet& write, const Pipeline& pipeline) {

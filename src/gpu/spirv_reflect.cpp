@@ -92,21 +92,6 @@ std::string literalString(const uint32_t* words, uint32_t count) {
     return text;
 }
 
-const char* typeName(VkDescriptorType type) {
-    switch (type) {
-        case VK_DESCRIPTOR_TYPE_SAMPLER: return "sampler";
-        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "combined image sampler";
-        case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "sampled image";
-        case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
-        case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "uniform texel buffer";
-        case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER: return "storage texel buffer";
-        case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "uniform buffer";
-        case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
-        case VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT: return "input attachment";
-        default: return "descriptor of unknown type";
-    }
-}
-
 std::string stageNames(VkShaderStageFlags stages) {
     std::string names;
     for (size_t i = 0; i < std::size(kStages); ++i)
@@ -115,7 +100,7 @@ std::string stageNames(VkShaderStageFlags stages) {
 }
 
 std::string describe(const ReflectedBinding& b) {
-    return std::string(typeName(b.type)) + (b.count == 1 ? "" : " array of " + std::to_string(b.count));
+    return std::string(descriptorTypeName(b.type)) + (b.count == 1 ? "" : " array of " + std::to_string(b.count));
 }
 
 // Adds `b` to `into`, or ORs its stages into the binding already there, which must be the same descriptor.
@@ -225,6 +210,21 @@ struct Module {
 };
 
 }  // namespace
+
+const char* descriptorTypeName(VkDescriptorType type) {
+    switch (type) {
+        case VK_DESCRIPTOR_TYPE_SAMPLER: return "sampler";
+        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "combined image sampler";
+        case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "sampled image";
+        case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
+        case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "uniform texel buffer";
+        case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER: return "storage texel buffer";
+        case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "uniform buffer";
+        case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
+        case VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT: return "input attachment";
+        default: return "descriptor of unknown type";
+    }
+}
 
 ShaderReflection reflectShader(const std::vector<uint32_t>& words, const std::string& name) {
     if (words.size() < kHeaderWords)

@@ -42,6 +42,9 @@ struct ShaderReflection {
     uint32_t localSize[3] = {1, 1, 1};  // compute: OpExecutionMode LocalSize or LocalSizeId
 };
 
+// "storage image", "uniform buffer", …: for error messages.
+const char* descriptorTypeName(VkDescriptorType type);
+
 // Reflects every descriptor variable the module declares (glslang keeps unused ones too). `name` is used
 // only in error messages. Malformed SPIR-V (wrong magic, a truncated instruction, word count 0, an id out
 // of bound) and descriptors this renderer does not use (runtime arrays, acceleration structures, ...)
