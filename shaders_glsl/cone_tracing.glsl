@@ -184,12 +184,11 @@ ChainRead chainReads(float lod, float distance, ConeSetup cone) {
 const float SIDED_AGREEMENT = 0.5f;
 const float BEHIND_MARGIN = 0.125f;
 bool behindSurfaces(vec3 uvw, float lod, vec3 position, float resolution) {
-    float weight =
-        SURFACE_PLANE_WEIGHT * dot(textureLod(voxelRadiance, uvw, lod).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
+    float weight = surfacePlaneWeight(textureLod(voxelRadiance, uvw, lod).rgb);
     if (!(weight > 0.0f)) return false;
     vec4 plane = surfacePlaneAt(uvw, lod);
     vec3 meanNormal = plane.xyz / weight;
-    float meanDistance = (dot(plane.xyz, position - 0.5f * resolution) - plane.w) / weight;
+    float meanDistance = (dot(plane.xyz, fromGridCentre(position, resolution)) - plane.w) / weight;
     return length(meanNormal) >= SIDED_AGREEMENT && meanDistance < -BEHIND_MARGIN;
 }
 

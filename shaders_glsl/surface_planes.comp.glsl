@@ -15,12 +15,12 @@ void main() {
     ivec3 size = imageSize(planes);
     if (any(greaterThanEqual(voxel, size))) return;
     vec4 normalOffset = imageLoad(normalSurface, voxel);
-    float weight = SURFACE_PLANE_WEIGHT * dot(imageLoad(radiance, voxel).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
+    float weight = surfacePlaneWeight(imageLoad(radiance, voxel).rgb);
     vec3 normal = normalOffset.xyz;
     float normalLength = length(normal);
-    // The surface point: the offset is along the unit mean normal; relative to the grid's centre,
-    // so that a half float holds the plane's offset to 1/8 voxel at 256³.
+    // The surface point: the offset is along the unit mean normal; from the grid's centre, so that
+    // a half float holds the plane's offset to 1/8 voxel at 256³.
     vec3 unit = normalLength > 0.0f ? normal / normalLength : vec3(0.0f);
-    vec3 surface = vec3(voxel) + 0.5f + unit * normalOffset.w - 0.5f * vec3(size);
+    vec3 surface = fromGridCentre(vec3(voxel) + 0.5f + unit * normalOffset.w, float(size.x));
     imageStore(planes, voxel, weight * vec4(normal, dot(normal, surface)));
 }

@@ -25,6 +25,15 @@ const uint SURFACE_PLANES_BINDING = 21u;
 // voxels at 256³: unscaled, a sunlit wall's weighted offset passed float16's 65504 from 128³ on.
 const float SURFACE_PLANE_WEIGHT = 1.0f / 1024.0f;
 
+// A voxel's or a filtered sample's weight: the luminance of its light as the radiance volume
+// stores it, scaled (above). The planes' level 0 and the test that reads them must weigh alike.
+SHARED_FN float surfacePlaneWeight(vec3 storedRadiance) {
+    return SURFACE_PLANE_WEIGHT * dot(storedRadiance, vec3(0.2126f, 0.7152f, 0.0722f));
+}
+
+// Grid coordinates from the grid's centre, where the planes' offsets are measured from.
+SHARED_FN vec3 fromGridCentre(vec3 gridPosition, float resolution) { return gridPosition - 0.5f * resolution; }
+
 VCT_SHARED_END
 
 #endif
