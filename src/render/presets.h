@@ -19,7 +19,7 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets();
 // The preset `vct render` and `vct bench`'s defaults start from when none is named: the most
 // accurate the front offers, at a still's cost (512² in under 2 s on lavapipe, 2 cores). A still
 // lights the voxels once, so a preset whose light change alone takes longer than that does not
-// qualify, however accurate (walls: 4.9 s).
+// qualify, however accurate (walls, docs/bench-walls.json).
 inline constexpr const char* kDefaultPreset = "quality";
 inline constexpr double kStillBudgetMs = 2000.0;
 

@@ -98,13 +98,8 @@ TEST_F(FailureModes, ATwoFacedWallLeaksLessTheThickerItIs) {
     }
 }
 
-// With ray visibility (ResourceSettings::rayVisibility) the targets of the visibility issue hold
+// With ray visibility (withRayVisibility, gpu_test.h) the targets of the visibility issue hold
 // for walls with voxels of their own; bounds are the targets unless named a guard.
-RenderSettings withRayVisibility(RenderSettings settings) {
-    settings.resources.rayVisibility = true;
-    settings.shading.diffuseConeAperture = 60.0f;
-    return settings;
-}
 
 TEST_F(FailureModes, WithRayVisibilityTwoFacedWallsAVoxelOrThickerLeakUnderOnePercent) {
     // Measured 0.06 / 0.19 / 0.004 % for 1, 2 and 4 voxels (32² images, 64³); the mips alone leak

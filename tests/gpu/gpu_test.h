@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/context.h"
+#include "render/presets.h"
 #include "render/settings.h"
 
 namespace vct::test {
@@ -22,6 +23,14 @@ inline RenderSettings smallRenderSettings(uint32_t size, RenderMode mode) {
     settings.resources.sunShadowMapSize = 256;
     settings.resources.localShadowMapSize = 128;
     settings.shading.mode = mode;
+    return settings;
+}
+
+// `settings` seen as the `walls` preset sees: ray visibility (ResourceSettings::rayVisibility) and
+// that preset's diffuse cone aperture.
+inline RenderSettings withRayVisibility(RenderSettings settings) {
+    settings.resources.rayVisibility = true;
+    settings.shading.diffuseConeAperture = findRenderPreset("walls")->shading.diffuseConeAperture;
     return settings;
 }
 

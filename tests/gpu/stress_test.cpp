@@ -10,7 +10,6 @@
 #include "error.h"
 #include "gpu/readback.h"
 #include "gpu_test.h"
-#include "render/presets.h"
 #include "render/renderer.h"
 #include "scene/load.h"
 
@@ -285,10 +284,8 @@ TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight)
 
 TEST_F(Stress, WithRayVisibilityACameraInsideAClosedBlockSeesUnderFivePercentOfTheRoomsLight) {
     // The visibility issue's target: at most 5 % of the usual view's light (walls' cones, 64³).
-    RenderSettings settings = smallSettings(32, 64);
-    settings.resources.rayVisibility = true;
-    settings.shading.diffuseConeAperture = findRenderPreset("walls")->shading.diffuseConeAperture;
-    const bench::InsideClosedBlock seen = bench::measureInsideClosedBlock(gpu(), settings);
+    const bench::InsideClosedBlock seen =
+        bench::measureInsideClosedBlock(gpu(), withRayVisibility(smallSettings(32, 64)));
     std::printf("[ stress ] rays, inside the tall block: %.5f, direct %.5f (usual view %.4f): %.4f\n",
                 seen.insideLuminance, seen.insideDirect, seen.usualLuminance, seen.ratio());
     EXPECT_EQ(seen.insideDirect, 0.0);
