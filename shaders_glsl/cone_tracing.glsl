@@ -46,7 +46,7 @@ struct ChainRead {
 
 vec4 sampleVoxels(vec3 uvw, float lod, ChainRead chain, vec3 direction, bool blendFinest) {
     uvw = clearOfTheBorder(uvw, lod);
-    if (frame.anisotropicVoxels == 0u) return textureLod(voxelRadiance, uvw, lod);
+    if ((frame.componentFlags & ANISOTROPIC_VOXELS) == 0u) return textureLod(voxelRadiance, uvw, lod);
     vec3 directionalLod = max(chain.lod - 1.0f, vec3(0.0f));
     vec3 weight = direction * direction;
     vec3 ahead = chain.ahead / float(frame.grid.resolution);
@@ -347,8 +347,9 @@ ConeResult traceDiffuseCone(vec3 origin, vec3 axis, float tanHalfAperture, float
 // twice the half-aperture from the normal (60° for the default 60° cones), so neighbouring
 // cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
 // irradiance is π·Σ wᵢ·Lᵢ. Returns the weighted radiance (rgb) and the weighted occlusion (a).
-// `coneCount` cones of the frame's aperture and centre weight.
-vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneCount) {
+// `coneCount` cones of the frame's aperture and centre weight; the ring turned by `ringTurn` of the
+// spacing between its cones.
+vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneCount, float ringTurn) {
     uint count = max(coneCount, 1u);
     float tanHalf = frame.coneTanHalfAperture;
     float centreWeight = count == 1u ? 1.0f : frame.diffuseCentreWeight;
@@ -367,7 +368,7 @@ vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneC
     vec3 radiance = centreWeight * centre.radiance;
     float occlusion = centreWeight * centre.occlusion;
     for (uint i = 1u; i < count; ++i) {
-        float azimuth = 6.28318530718f * float(i - 1u) / float(count - 1u);
+        float azimuth = 6.28318530718f * (float(i - 1u) + ringTurn) / float(count - 1u);
         vec3 around = cos(azimuth) * tangent + sin(azimuth) * bitangent;
         vec3 direction = normalize(cos(ringAngle) * normal + sin(ringAngle) * around);
         ConeResult side = traceDiffuseCone(origin, direction, tanHalf, startHeight, normal, dot(direction, normal));
@@ -377,9 +378,9 @@ vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneC
     return vec4(radiance, occlusion);
 }
 
-// The frame's diffuse cones (frame.diffuseConeCount).
+// The frame's diffuse cones (frame.diffuseConeCount), the ring turned as the frame says.
 vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
-    return traceDiffuseConeSet(origin, normal, startHeight, frame.diffuseConeCount);
+    return traceDiffuseConeSet(origin, normal, startHeight, frame.diffuseConeCount, frame.diffuseRingTurn);
 }
 
 // The GGX lobe as one cone: the cone that holds half of the lobe's energy. GGX puts a fraction

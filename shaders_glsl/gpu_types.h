@@ -81,6 +81,8 @@ const uint USE_AREA_LIGHTS = 128u;
 const uint SHOW_SKY = 256u;
 // Not a component: cones stop where a ray along them meets a surface (ResourceSettings::rayVisibility).
 const uint RAY_VISIBILITY = 512u;
+// Not a component: six directional mip chains instead of one (ResourceSettings::anisotropicVoxels).
+const uint ANISOTROPIC_VOXELS = 1024u;
 // The flags the voxels' light depends on (inject.comp.glsl): a change converges it again.
 const uint VOXEL_LIGHT_FLAGS = USE_SHADOWS | USE_AREA_LIGHTS;
 
@@ -98,8 +100,8 @@ struct FrameConstants {
     vec3 cameraPosition;
     uint lightCount;
     uint shadowViewCount;
-    uint componentFlags;     // SHOW_* / USE_*
-    uint anisotropicVoxels;  // 1 = six directional mip chains
+    uint componentFlags;     // SHOW_* / USE_* / RAY_VISIBILITY / ANISOTROPIC_VOXELS
+    float diffuseRingTurn;   // the screen's diffuse ring turned by this share of its cones' spacing
     uint debugView;          // DEBUG_*
     vec2 renderSize;         // of the render target, in pixels
     vec2 inverseRenderSize;

@@ -116,6 +116,11 @@ std::vector<Option> makeSharedOptions() {
         {"cone-aperture", "DEGREES", "full angle of each diffuse cone",
          [](const V& v, S& s) { s.shading.diffuseConeAperture = v.number(1.0f, 120.0f); },
          [](const S& s) { return number(s.shading.diffuseConeAperture); }},
+        {"cone-turns", "N",
+         "the diffuse cones' ring turned N times about the normal, one still frame each, and the frames averaged "
+         "(1 = fixed directions)",
+         [](const V& v, S& s) { s.shading.diffuseConeTurns = v.whole(1, 16); },
+         [](const S& s) { return std::to_string(s.shading.diffuseConeTurns); }},
         {"cone-step", "F", "cone step as a fraction of its diameter",
          [](const V& v, S& s) { s.shading.coneStep = v.number(0.05f, 4.0f); },
          [](const S& s) { return number(s.shading.coneStep); }},

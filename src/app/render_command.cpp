@@ -75,7 +75,8 @@ int runRender(const std::vector<std::string>& rawArguments) {
     for (uint32_t frame = 0; frame < frames; ++frame) {
         progress.setStage(frames == 1 ? std::string("rendering")
                                       : "frame " + std::to_string(frame + 1) + " of " + std::to_string(frames));
-        stats = renderer.renderFrame();
+        // The last frame waits for the image to settle, as a still viewer's does.
+        stats = frame + 1 < frames ? renderer.renderFrame() : renderer.renderSettled();
     }
     progress.setStage("writing " + outPath);
     const Image image = renderer.readImage();

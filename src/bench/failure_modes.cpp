@@ -143,7 +143,7 @@ Scene makeSunRoomInASunlitShell(float gap) {
 double measureShelledRoomIndirect(GpuContext& context, RenderSettings settings, const Image& sunRoomIndirect) {
     settings.shading.mode = RenderMode::Indirect;
     Renderer renderer(context, makeSunRoomInASunlitShell(kShellGap), settings);
-    renderer.renderFrame();
+    renderer.renderSettled();
     const double truth = meanLuminance(sunRoomIndirect);
     return truth > 0.0 ? meanLuminance(renderer.readImage()) / truth : 0.0;
 }
@@ -151,18 +151,18 @@ double measureShelledRoomIndirect(GpuContext& context, RenderSettings settings, 
 InsideClosedBlock measureInsideClosedBlock(GpuContext& context, RenderSettings settings) {
     Renderer renderer(context, loadScene("cornell"), settings);
     InsideClosedBlock seen;
-    renderer.renderFrame();
+    renderer.renderSettled();
     seen.usualLuminance = meanLuminance(renderer.readImage());
     Camera camera = renderer.camera();
     camera.position = glm::vec3(0.368f, 0.2f, 0.351f);  // the middle of the tall block
     camera.forward = glm::vec3(0.0f, 0.0f, 1.0f);
     camera.znear = 0.001f;
     renderer.setCamera(camera);
-    renderer.renderFrame();
+    renderer.renderSettled();
     seen.insideLuminance = meanLuminance(renderer.readImage());
     settings.shading.mode = RenderMode::Direct;
     renderer.setShading(settings.shading);
-    renderer.renderFrame();
+    renderer.renderSettled();
     seen.insideDirect = meanLuminance(renderer.readImage());
     return seen;
 }
@@ -194,7 +194,7 @@ SelfIllumination measureSelfIllumination(GpuContext& context, RenderSettings set
     for (RenderMode mode : {RenderMode::Direct, RenderMode::Indirect}) {
         settings.shading.mode = mode;
         renderer.setShading(settings.shading);
-        renderer.renderFrame();
+        renderer.renderSettled();
         (mode == RenderMode::Direct ? result.directLuminance : result.indirectLuminance) =
             meanLuminance(renderer.readImage());
     }
@@ -212,11 +212,11 @@ LeakMeasurement measureLightLeak(GpuContext& context, const RenderSettings& sett
     Renderer renderer(context, twoRooms, settings);
     LeakMeasurement leak;
     renderer.setCamera(litRoomCamera());
-    renderer.renderFrame();
+    renderer.renderSettled();
     leak.litRoom = renderer.readImage();
     leak.litRoomLuminance = meanLuminance(leak.litRoom);
     renderer.setCamera(darkRoomCamera());
-    renderer.renderFrame();
+    renderer.renderSettled();
     leak.darkRoom = renderer.readImage();
     leak.darkRoomLuminance = meanLuminance(leak.darkRoom);
     return leak;
@@ -229,7 +229,7 @@ std::vector<ResolutionLuminance> measureResolutionDrift(GpuContext& context, con
     for (uint32_t resolution : resolutions) {
         settings.resources.voxelResolution = resolution;
         Renderer renderer(context, scene, settings);
-        renderer.renderFrame();
+        renderer.renderSettled();
         const Image image = renderer.readImage();
         results.push_back({resolution, meanLuminance(image), allFiniteAndNonNegative(image)});
     }
@@ -241,7 +241,7 @@ FirstBounce measureFirstBounce(GpuContext& context, const Scene& scene, RenderSe
     settings.shading.mode = RenderMode::Indirect;
     settings.resources.bounces = 1;
     Renderer renderer(context, scene, settings);
-    renderer.renderFrame();
+    renderer.renderSettled();
     const Image image = renderer.readImage();
     return {compareImages(image, oneBounceReference), allFiniteAndNonNegative(image)};
 }
@@ -251,14 +251,14 @@ FlickerMeasurement measureFlicker(GpuContext& context, const Scene& scene, const
     Renderer renderer(context, scene, settings);
     const Camera start = renderer.camera();
     const std::vector<Light> lights = renderer.lights();
-    renderer.renderFrame();
+    renderer.renderSettled();
     const Image before = renderer.readImage();
 
     FlickerMeasurement flicker;
     Camera moved = start;
     moved.position.x += cameraStep;
     renderer.setCamera(moved);
-    renderer.renderFrame();
+    renderer.renderFrame();  // the first frame a viewer shows after the step
     flicker.cameraChange = relativeL1Difference(before, renderer.readImage());
     renderer.setCamera(start);
 

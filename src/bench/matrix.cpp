@@ -52,6 +52,7 @@ std::string settingLabel(const RenderSettings& s) {
     if (s.resources.sunShadowMapSize != 2048) label += " sm" + std::to_string(s.resources.sunShadowMapSize);
     if (s.image.diffuseDownscale != 1) label += " d" + std::to_string(s.image.diffuseDownscale);
     if (s.resources.rayVisibility) label += " rays";
+    if (s.shading.diffuseConeTurns != 1) label += " t" + std::to_string(s.shading.diffuseConeTurns);
     return label;
 }
 
@@ -62,7 +63,8 @@ std::vector<std::string> settingLabelLegend() {
         "aniso / iso = six directional mip chains / one,",
         "bconv / b1 = bounces until converged / one bounce,",
         "ss2 = 2×2 samples a pixel, sm4096 = 4096² sun shadow map (else 2048²),",
-        "d4 = diffuse cones traced once per 4×4 pixels, rays = ray visibility; * = on the front",
+        "d4 = diffuse cones traced once per 4×4 pixels, rays = ray visibility,",
+        "t4 = the cones' ring turned over 4 still frames, averaged; * = on the front",
     };
 }
 

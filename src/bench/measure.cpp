@@ -166,6 +166,13 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
         }
         m.bounces = frames.back().bounces;
         m.bouncesConverged = frames.back().bouncesConverged;
+        // The image a still viewer converges to (the reused diffuse light traced anew, the ring's
+        // turns averaged), then the frames of a still view.
+        const auto settleStart = std::chrono::steady_clock::now();
+        m.settleFrames = 0;
+        for (; renderer->settling() && m.settleFrames < kMaxSettleFrames; ++m.settleFrames) renderer->renderFrame();
+        m.settleMilliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - settleStart).count();
 
         frames.clear();
         for (uint32_t i = 0; i < options.frames; ++i) frames.push_back(renderer->renderFrame());
@@ -180,11 +187,11 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
 
         shading.mode = RenderMode::Direct;
         renderer->setShading(shading);
-        renderer->renderFrame();
+        renderer->renderSettled();
         const Image direct = renderer->readImage();
         shading.mode = RenderMode::Indirect;
         renderer->setShading(shading);
-        renderer->renderFrame();
+        renderer->renderSettled();
         const Image indirect = renderer->readImage();
         shading.mode = RenderMode::Full;
         renderer->setShading(shading);

@@ -59,7 +59,11 @@ struct ModeErrors {
 struct Measurement {
     std::string scene;
     BenchSetting setting;
-    FrameTiming staticFrame;       // nothing changed
+    FrameTiming staticFrame;  // nothing changed
+    // After a light change, the frames until the image settled (Renderer::settling: reused diffuse
+    // light traced anew, the ring's turns averaged) and their wall time.
+    uint32_t settleFrames = 0;
+    double settleMilliseconds = 0.0;
     FrameTiming lightChangeFrame;  // a light changed: shadow maps, injection, mips and shading
     // The viewer's frame while a light moves (converged bounces only): one progressive bounce
     // gathered for one of bounceSlices slices of the voxels.
@@ -74,6 +78,9 @@ struct Measurement {
     std::optional<ModeErrors> errors;
     Image fullImage;  // what the static frames showed
 };
+
+// Frames a measurement waits at most for the image to settle.
+inline constexpr uint32_t kMaxSettleFrames = 64;
 
 struct MeasureOptions {
     uint32_t warmupFrames = 1;

@@ -188,7 +188,10 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
              << ", \"supersample\": " << s.image.supersample
              << ", \"diffuse_resolution\": " << jsonString(diffuseResolutionName(s.image.diffuseDownscale))
              << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
-             << "},\n     \"static\": " << jsonTiming(m.staticFrame)
+             << ", \"visibility\": " << jsonString(s.resources.rayVisibility ? "rays" : "mips")
+             << ", \"cone_turns\": " << s.shading.diffuseConeTurns
+             << "},\n     \"static\": " << jsonTiming(m.staticFrame) << ", \"settle_frames\": " << m.settleFrames
+             << ", \"settle_ms\": " << jsonNumber(m.settleMilliseconds)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
              << (m.lightMovingFrame ? ",\n     \"light_moving\": " + jsonTiming(*m.lightMovingFrame) +
                                           ", \"bounce_slices\": " + std::to_string(m.bounceSlices)

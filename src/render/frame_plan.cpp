@@ -44,7 +44,7 @@ FramePlan planFrame(const StaleInputs& stale, const RenderSettings& settings) {
         if (pass == Pass::Bounce) run = inject && bounces != 1 && !progressive;
         if (pass == Pass::DiffuseCones)
             run = settings.image.diffuseDownscale > 1 && needsDiffuseCones(settings.shading);
-        if (pass == Pass::Resolve) run = settings.image.supersample > 1;
+        if (pass == Pass::Resolve) run = resolvesImage(settings);
         if (run) plan.passes.push_back(pass);
     }
     return plan;

@@ -7,7 +7,7 @@
 // the last light (so it is the first bounce of the series), and `bounce` repeats it until the light
 // converges, or, progressively, the next frames do. The diffuse cones have a pass of their own
 // only at a reduced resolution (ImageSettings::diffuseDownscale); otherwise shading traces them.
-// The resolve runs only with supersamples to average: at one a pixel it would be a copy.
+// The resolve runs only with supersamples or still frames to average: otherwise it would be a copy.
 #pragma once
 
 #include <array>

@@ -111,9 +111,15 @@ void Renderer::resize(const ImageSettings& image) {
                                                          context_, samplesWide, samplesHigh, image.diffuseDownscale)
                                                    : nullptr;
     shadePass_ = std::make_unique<ShadePass>(context_, samplesWide, samplesHigh);
-    resolvePass_ =
-        image.supersample > 1 ? std::make_unique<ResolvePass>(context_, width, height, image.supersample) : nullptr;
+    resolvePass_.reset();
+    createResolvePassIfNeeded();
     stale_.view = true;
+}
+
+void Renderer::createResolvePassIfNeeded() {
+    if (resolvesImage(settings_) && !resolvePass_)
+        resolvePass_ = std::make_unique<ResolvePass>(context_, settings_.image.width, settings_.image.height,
+                                                     settings_.image.supersample);
 }
 
 void Renderer::setLights(const std::vector<Light>& lights) {
@@ -201,6 +207,7 @@ void Renderer::setEnvironmentRotation(float radians) {
 void Renderer::setShading(const ShadingSettings& shading) {
     // Other cones gather other light: the reduced diffuse light of the last frames no longer holds.
     if (diffuseConesPass_ && shading != settings_.shading) diffuseConesPass_->forgetHistory();
+    if (shading != settings_.shading) shadingChanged_ = true;
     // Shadows or area lights switched on or off light the voxels differently, the area lights'
     // part included.
     if (voxelLightFlags(shading) != voxelLightFlags(settings_.shading)) {
@@ -208,6 +215,7 @@ void Renderer::setShading(const ShadingSettings& shading) {
         injectPass_.forgetAreaLights();
     }
     settings_.shading = shading;
+    createResolvePassIfNeeded();
 }
 
 uint32_t Renderer::voxelLightFlags(const ShadingSettings& shading) {
@@ -228,8 +236,8 @@ glm::mat4 Renderer::writeFrameConstants() {
     const ShadingSettings& shading = settings_.shading;
     constants.componentFlags = componentFlags(effectiveComponents(shading)) |
                                (shading.mode != RenderMode::Indirect ? glsl::SHOW_SKY : 0u) |
-                               (settings_.resources.rayVisibility ? glsl::RAY_VISIBILITY : 0u);
-    constants.anisotropicVoxels = settings_.resources.anisotropicVoxels ? 1u : 0u;
+                               (settings_.resources.rayVisibility ? glsl::RAY_VISIBILITY : 0u) |
+                               (settings_.resources.anisotropicVoxels ? glsl::ANISOTROPIC_VOXELS : 0u);
     constants.debugView = uint32_t(shading.debugView);
     constants.renderSize = glm::vec2(float(width), float(height));
     constants.inverseRenderSize = glm::vec2(1.0f / float(width), 1.0f / float(height));
@@ -251,6 +259,8 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.coneStopOpacity = shading.coneStopOpacity;
     constants.diffuseCentreWeight = shading.diffuseCentreWeight;
     constants.diffuseConeCount = shading.diffuseConeCount;
+    const uint32_t turns = stillFramesAveraged(shading);
+    constants.diffuseRingTurn = float(ringTurn_ % turns) / float(turns);
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
     constants.environment = glm::vec4(environment_, sky_->mapped() ? 1.0f : 0.0f);
@@ -269,6 +279,10 @@ FrameStats Renderer::renderFrame() {
     gbufferViewProjection_ = viewProjection;
     stats.plan = planFrame(stale_, settings_);
     const FramePlan& plan = stats.plan;
+    // New shading, view, light or geometry: the still frames' mean starts anew.
+    if (shadingChanged_ || plan.runs(Pass::GBuffer) || plan.runs(Pass::Inject) || plan.runs(Pass::Shadow))
+        framesAveraged_ = 0;
+    shadingChanged_ = false;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
     const bool progressive = bouncesProgressively(settings_);
     // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
@@ -393,7 +407,14 @@ FrameStats Renderer::renderFrame() {
                                      sky_.get()};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
-        run(commands, Pass::Resolve, [&] { resolvePass_->record(commands, shadePass_->radiance); });
+        // Once every turn of the ring is in the mean, the resolved image stays as it is.
+        const bool meanComplete = framesAveraged_ >= stillFramesAveraged(settings_.shading) && framesAveraged_ > 1;
+        if (!meanComplete)
+            run(commands, Pass::Resolve, [&] {
+                const bool settled =
+                    (!progressive || converged) && (!plan.runs(Pass::DiffuseCones) || diffuseConesPass_->settled());
+                resolvePass_->record(commands, shadePass_->radiance, averageStillFrame(settled));
+            });
     });
     stats.bouncesConverged = converged;
     diffuseReuseSettling_ = plan.runs(Pass::DiffuseCones) && !diffuseConesPass_->settled();
@@ -403,6 +424,27 @@ FrameStats Renderer::renderFrame() {
     }
     stale_ = afterFrame(stale_, plan, converged);
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+float Renderer::averageStillFrame(bool settled) {
+    const uint32_t turns = stillFramesAveraged(settings_.shading);
+    if (!settled || turns == 1) {
+        framesAveraged_ = settled ? 1 : 0;
+        return 1.0f;
+    }
+    ++framesAveraged_;
+    if (framesAveraged_ < turns) {
+        // The next frame traces the ring turned on, at every sample: the reused light is another turn's.
+        ringTurn_ = (ringTurn_ + 1) % turns;
+        if (diffuseConesPass_) diffuseConesPass_->forgetHistory();
+    }
+    return 1.0f / float(framesAveraged_);
+}
+
+FrameStats Renderer::renderSettled(uint32_t maxFrames) {
+    FrameStats stats = renderFrame();
+    for (uint32_t frame = 1; frame < maxFrames && settling(); ++frame) stats = renderFrame();
     return stats;
 }
 

@@ -86,10 +86,17 @@ public:
 
     // Records, submits and waits for one frame.
     FrameStats renderFrame();
-    // Progressive bounces have not converged yet, or the reduced diffuse cones' reused light has not
-    // all been traced anew since the view or the light changed: the next frame changes the image
-    // even if nothing else does.
-    bool settling() const { return stale_.bounces || diffuseReuseSettling_; }
+    // Progressive bounces have not converged yet, the reduced diffuse cones' reused light has not
+    // all been traced anew since the view or the light changed, or the still frames whose cones
+    // turned (ShadingSettings::diffuseConeTurns) are not all in the image's mean: the next frame
+    // changes the image even if nothing else does.
+    bool settling() const {
+        const uint32_t averaged = stillFramesAveraged(settings_.shading);
+        return stale_.bounces || diffuseReuseSettling_ || (averaged > 1 && framesAveraged_ < averaged);
+    }
+    // Renders frames until the image settles (at most `maxFrames`): the image a still viewer
+    // converges to, as `vct render` and `vct bench` show it. Returns the last frame's stats.
+    FrameStats renderSettled(uint32_t maxFrames = 64);
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
 
@@ -100,12 +107,17 @@ public:
     const VoxelVolumes& volumes() const { return *volumes_; }
     // The last frame's image (RGBA32F, width × height, GENERAL layout): the resolved one, or at one
     // sample per pixel the shading pass's own, e.g. for a viewer to tone-map onto its swapchain.
-    const GpuImage& output() const { return resolvePass_ ? resolvePass_->resolved : shadePass_->radiance; }
+    const GpuImage& output() const { return resolvesImage(settings_) ? resolvePass_->resolved : shadePass_->radiance; }
     // Device memory held by the renderer's images and buffers, in bytes.
     uint64_t deviceMemoryBytes() const;
 
 private:
     void applyLights(const std::vector<Light>& lights);
+    // The resolve pass where resolvesImage() asks for one and there is none yet.
+    void createResolvePassIfNeeded();
+    // This frame's share of the resolved mean (ResolvePass::record); counts the frame into it and
+    // turns the ring for the next one where `settled` (its image will not change by itself).
+    float averageStillFrame(bool settled);
     // `lights` and, where the environment image has a sun, that sun as a directional light, turned
     // and scaled as the sky is now.
     std::vector<Light> withEnvironmentSun(const std::vector<Light>& lights) const;
@@ -149,8 +161,13 @@ private:
     Buffer meanRadiance_;  // host-visible RGBA16F texel
     float lastMeanRadiance_ = 0.0f;
     bool diffuseReuseSettling_ = false;  // see settling()
-    uint32_t slicePhase_ = 0;            // the occupied voxels' slice the next progressive bounce gathers for
-    Buffer occupiedHeader_;              // host-visible copy of the occupied list's header, made after voxelizing
+    // The still frames in the resolved image's mean, and the turn of the diffuse ring the next frame
+    // traces (of stillFramesAveraged()); a change to the shading or the image size starts anew.
+    uint32_t framesAveraged_ = 0;
+    uint32_t ringTurn_ = 0;
+    bool shadingChanged_ = false;
+    uint32_t slicePhase_ = 0;  // the occupied voxels' slice the next progressive bounce gathers for
+    Buffer occupiedHeader_;    // host-visible copy of the occupied list's header, made after voxelizing
     uint32_t occupiedVoxels_ = 0;
     Buffer lightsBuffer_;
     Buffer shadowViewsBuffer_;

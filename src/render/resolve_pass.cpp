@@ -16,16 +16,24 @@ ResolvePass::ResolvePass(GpuContext& context, uint32_t targetWidth, uint32_t tar
     pipeline = createComputePipeline(context, "resolve.comp");
 }
 
-void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled) {
-    imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled, float frameShare) {
+    // The last mean is kept where this frame adds to it, and may be discarded where it replaces it.
+    const bool keeps = frameShare < 1.0f;
+    imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                 keeps ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, keeps ? VK_ACCESS_2_MEMORY_WRITE_BIT : VK_ACCESS_2_NONE,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | (keeps ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT : 0));
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     DescriptorPush()
         .sampledImage(0, supersampled.view, pointSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(1, resolved.view)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-    vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(supersample), &supersample);
+    const struct {
+        uint32_t factor;
+        float weight;
+    } push{supersample, frameShare};
+    vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
     imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

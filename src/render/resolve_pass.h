@@ -1,6 +1,7 @@
-// Averages each pixel's supersample² samples (a box filter over the pixel's square). At one
-// sample per pixel there is nothing to average: the frame plan leaves it out and the shading
-// pass's image is the output.
+// Averages each pixel's supersample² samples (a box filter over the pixel's square), and still
+// frames whose cones turned (ShadingSettings::diffuseConeTurns) into their running mean. At one
+// sample per pixel and one frame there is nothing to average: the frame plan leaves it out and the
+// shading pass's image is the output.
 #pragma once
 
 #include "gpu/pipelines.h"
@@ -11,8 +12,9 @@ namespace vct {
 struct ResolvePass {
     ResolvePass(GpuContext& context, uint32_t width, uint32_t height, uint32_t supersample);
 
-    // Reads `supersampled` (GENERAL); leaves `resolved` in GENERAL.
-    void record(VkCommandBuffer commands, const GpuImage& supersampled);
+    // Reads `supersampled` (GENERAL); leaves `resolved` in GENERAL. `frameShare`: this frame's
+    // weight in the running mean, 1 / the frames averaged so far (1: the frame alone).
+    void record(VkCommandBuffer commands, const GpuImage& supersampled, float frameShare = 1.0f);
 
     uint32_t width, height, supersample;
     GpuImage resolved;  // RGBA32F, width × height

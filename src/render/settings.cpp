@@ -1,5 +1,7 @@
 #include "render/settings.h"
 
+#include <algorithm>
+
 namespace vct {
 
 std::optional<RenderMode> parseRenderMode(const std::string& name) {
@@ -80,6 +82,15 @@ bool needsDiffuseCones(const ShadingSettings& shading) {
     const Components shown = effectiveComponents(shading);
     return shading.debugView == DebugView::None &&
            (shown.indirectDiffuse || (shown.ambientOcclusion && shading.ambientFactor > 0.0f));
+}
+
+uint32_t stillFramesAveraged(const ShadingSettings& shading) {
+    const bool ring = needsDiffuseCones(shading) && shading.diffuseConeCount > 1;
+    return ring ? std::max(shading.diffuseConeTurns, 1u) : 1u;
+}
+
+bool resolvesImage(const RenderSettings& settings) {
+    return settings.image.supersample > 1 || stillFramesAveraged(settings.shading) > 1;
 }
 
 }  // namespace vct

@@ -130,6 +130,11 @@ struct ShadingSettings {
     float coneStartOffset = 1.5f;       // surface to cone apex, in voxels of a 64³ grid (and at least of this one)
     float coneStopOpacity = 0.95f;      // a cone stops once this opaque
     float aoFalloff = 8.0f;             // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
+    // The screen's ring of diffuse cones turned this many times about the normal, by equal shares
+    // of the spacing between its cones, one still frame each, and those frames averaged
+    // (Renderer::settling): more directions from the same cones a frame. With ray visibility the
+    // cones see sharply, and six fixed directions drew a small sunlit patch as streaks. 1: fixed.
+    uint32_t diffuseConeTurns = 1;
     // March through empty space with the coarse mips. Unset: on, except on a software rasterizer,
     // which runs both sides of the test at every step and measured each cone 25 % faster without it.
     std::optional<bool> skipEmptySpace;
@@ -187,5 +192,10 @@ inline uint32_t progressiveSlices(const RenderSettings& settings, uint32_t occup
 bool needsVoxels(const ShadingSettings& shading);
 // Whether the lit image traces diffuse cones (indirect diffuse light, or AO for the ambient term).
 bool needsDiffuseCones(const ShadingSettings& shading);
+// The still frames the image averages: ShadingSettings::diffuseConeTurns where the image shows a
+// ring of diffuse cones (1 otherwise: every frame would be the same image).
+uint32_t stillFramesAveraged(const ShadingSettings& shading);
+// Whether the frame ends with the resolve pass: supersamples to average, or still frames.
+bool resolvesImage(const RenderSettings& settings);
 
 }  // namespace vct

@@ -161,6 +161,10 @@ static void coneSection(RenderSettings& settings) {
     settings.shading.diffuseConeCount = uint32_t(cones);
     ImGui::SliderFloat("aperture", &settings.shading.diffuseConeAperture, 5.0f, 120.0f, "%.0f deg");
     ImGui::SliderFloat("centre weight", &settings.shading.diffuseCentreWeight, 0.0f, 1.0f);
+    // The ring turned over still frames and averaged: more directions once the view is still.
+    int turns = int(settings.shading.diffuseConeTurns);
+    ImGui::SliderInt("ring turns", &turns, 1, 16);
+    settings.shading.diffuseConeTurns = uint32_t(std::max(turns, 1));
     ImGui::SliderFloat("step", &settings.shading.coneStep, 0.1f, 2.0f, "%.2f diameters");
     ImGui::SliderFloat("max distance", &settings.shading.coneMaxDistance, 0.05f, 1.5f, "%.2f grid");
     ImGui::SliderFloat("start offset", &settings.shading.coneStartOffset, 0.0f, 4.0f, "%.2f voxels");

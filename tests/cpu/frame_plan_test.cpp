@@ -35,6 +35,19 @@ TEST(FramePlan, OneSamplePerPixelHasNothingToResolve) {
     EXPECT_TRUE(planFrame(nothing, settings).runs(Pass::Resolve));
 }
 
+TEST(FramePlan, StillFramesToAverageAreResolvedAtOneSamplePerPixel) {
+    const StaleInputs nothing{.shadows = false, .voxels = false, .radiance = false, .view = false};
+    RenderSettings settings;
+    settings.image.supersample = 1;
+    settings.shading.diffuseConeTurns = 4;
+    EXPECT_TRUE(planFrame(nothing, settings).runs(Pass::Resolve)) << "the resolve keeps the turns' mean";
+    settings.shading.mode = RenderMode::Direct;
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::Resolve)) << "no cones: every frame is the same image";
+    settings.shading.mode = RenderMode::Full;
+    settings.shading.diffuseConeCount = 1;
+    EXPECT_FALSE(planFrame(nothing, settings).runs(Pass::Resolve)) << "one cone has no ring to turn";
+}
+
 TEST(FramePlan, OnlyAChangedViewRedrawsTheGBuffer) {
     const StaleInputs view{.shadows = false, .voxels = false, .radiance = false, .view = true};
     EXPECT_EQ(names(planFrame(view, RenderSettings{})), (Names{"gbuffer", "shade", "resolve"}));

@@ -301,7 +301,7 @@ TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
                          MEMBER(FrameConstants, lightCount),
                          MEMBER(FrameConstants, shadowViewCount),
                          MEMBER(FrameConstants, componentFlags),
-                         MEMBER(FrameConstants, anisotropicVoxels),
+                         MEMBER(FrameConstants, diffuseRingTurn),
                          MEMBER(FrameConstants, debugView),
                          MEMBER(FrameConstants, renderSize),
                          MEMBER(FrameConstants, inverseRenderSize),

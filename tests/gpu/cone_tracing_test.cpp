@@ -101,8 +101,8 @@ protected:
         frame.diffuseCentreWeight = 0.25f;
         frame.radianceScale = 1.0f;
         frame.diffuseConeCount = 6;
-        frame.anisotropicVoxels = anisotropic ? 1u : 0u;
-        frame.componentFlags = rayVisibility ? glsl::RAY_VISIBILITY : 0u;
+        frame.componentFlags =
+            (rayVisibility ? glsl::RAY_VISIBILITY : 0u) | (anisotropic ? glsl::ANISOTROPIC_VOXELS : 0u);
         return frame;
     }
 
