@@ -14,6 +14,7 @@
 #define VCT_SURFACE_PLANES_H
 
 #include "cpp_glsl.h"
+#include "luminance.h"
 
 VCT_SHARED_BEGIN
 
@@ -28,7 +29,7 @@ const float SURFACE_PLANE_WEIGHT = 1.0f / 1024.0f;
 // A voxel's or a filtered sample's weight: the luminance of its light as the radiance volume
 // stores it, scaled (above). The planes' level 0 and the test that reads them must weigh alike.
 SHARED_FN float surfacePlaneWeight(vec3 storedRadiance) {
-    return SURFACE_PLANE_WEIGHT * dot(storedRadiance, vec3(0.2126f, 0.7152f, 0.0722f));
+    return SURFACE_PLANE_WEIGHT * luminance(storedRadiance);
 }
 
 // Grid coordinates from the grid's centre, where the planes' offsets are measured from.

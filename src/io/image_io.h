@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "luminance.h"
+
 namespace vct {
 
 struct Image {
@@ -21,7 +23,7 @@ struct Image {
 };
 
 // Rec. 709 luminance of the pixel at `rgb`.
-inline double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+inline double luminance(const float* rgb) { return glsl::luminance(glm::dvec3(rgb[0], rgb[1], rgb[2])); }
 
 // Writes standard PFM: "PF", little-endian (scale −1), rows bottom-to-top.
 void writePfm(const std::string& path, const Image& image);

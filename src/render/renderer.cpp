@@ -10,6 +10,7 @@
 
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
+#include "luminance.h"
 #include "render/camera.h"
 #include "render/frame_constants.h"
 #include "render/frame_plan.h"
@@ -480,8 +481,8 @@ void Renderer::recordMeanRadiance(VkCommandBuffer commands) {
 
 bool Renderer::meanRadianceSettled() {
     const uint16_t* half = static_cast<const uint16_t*>(meanRadiance_.mapped);
-    const float luminance = 0.2126f * glm::unpackHalf1x16(half[0]) + 0.7152f * glm::unpackHalf1x16(half[1]) +
-                            0.0722f * glm::unpackHalf1x16(half[2]);
+    const float luminance = glsl::luminance(
+        glm::vec3(glm::unpackHalf1x16(half[0]), glm::unpackHalf1x16(half[1]), glm::unpackHalf1x16(half[2])));
     const float change = std::abs(luminance - lastMeanRadiance_);
     lastMeanRadiance_ = luminance;
     return change <= kBounceTolerance * luminance;

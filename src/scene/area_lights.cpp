@@ -7,6 +7,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "luminance.h"
 #include "scene/material_textures.h"
 
 namespace vct {
@@ -18,7 +19,7 @@ struct Emitter {
     glm::vec3 frontNormal;  // unit
 };
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+using glsl::luminance;
 
 // Disjoint sets over the emitters, for the surfaces their shared vertices join.
 struct DisjointSets {

@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "error.h"
+#include "luminance.h"
 #include "scene/material_textures.h"
 
 namespace vct {
@@ -37,8 +38,7 @@ double emittedPower(const Scene& scene) {
         const double area = 0.5 * glm::length(glm::cross(glm::dvec3(v[1]->position - v[0]->position),
                                                          glm::dvec3(v[2]->position - v[0]->position)));
         // A Lambertian emitter of radiance L sends π·L out of each unit of its front face.
-        const double luminance = 0.2126 * radiance.r + 0.7152 * radiance.g + 0.0722 * radiance.b;
-        if (std::isfinite(area)) power += glm::pi<double>() * luminance * area;
+        if (std::isfinite(area)) power += glm::pi<double>() * glsl::luminance(radiance) * area;
     }
     return power;
 }

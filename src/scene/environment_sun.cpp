@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "equirectangular.h"
+#include "luminance.h"
 
 namespace vct {
 
 namespace {
 
-double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+using glsl::luminance;
 
 // The direction of texel (x, y)'s centre (unturned) and the solid angle it spans.
 glm::dvec3 texelDirection(const EnvironmentMap& map, uint32_t x, uint32_t y) {

@@ -2,6 +2,7 @@
 // merged past kMaxAreaLights, and approximated past the triangle budget with their power kept.
 #include <gtest/gtest.h>
 
+#include "luminance.h"
 #include "scene/area_lights.h"
 #include "scene/load.h"
 #include "scene/material_textures.h"
@@ -9,7 +10,7 @@
 namespace vct {
 namespace {
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+using glsl::luminance;
 
 // A floor-sized scene with `n`×`n` separate square tiles of side 0.1 m under a ceiling at y = 2,
 // glowing downwards with radiance 5; the tiles of the first row glow 10.

@@ -128,8 +128,7 @@ Estimate regionLuminance(const RenderResult& r, uint32_t x0, uint32_t y0, uint32
     double sum = 0.0, variance = 0.0;
     for (uint32_t y = y0; y < y1; ++y) {
         for (uint32_t x = x0; x < x1; ++x) {
-            const float* p = r.image.pixel(x, y);
-            sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            sum += luminance(r.image.pixel(x, y));
             variance += r.luminanceVariance[size_t(y) * r.image.width + x];
         }
     }

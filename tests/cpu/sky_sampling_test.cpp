@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "environment_images.h"
+#include "luminance.h"
 #include "path_tracer.h"
 #include "pathtracer_test_helpers.h"
 #include "scene/environment_map.h"
@@ -74,8 +75,7 @@ double irradianceFromAbove(const EnvironmentMap& map) {
             const glm::vec3 direction(float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)),
                                       float(-std::sin(theta) * std::cos(phi)));
             const glm::vec3 radiance = environmentRadiance(map, direction, 0.0f);
-            const double luminance = 0.2126 * radiance.r + 0.7152 * radiance.g + 0.0722 * radiance.b;
-            sum += luminance * std::cos(theta) * std::sin(theta);
+            sum += glsl::luminance(glm::dvec3(radiance)) * std::cos(theta) * std::sin(theta);
         }
     }
     return sum * (0.5 * kPi / kRows) * (2.0 * kPi / kColumns);

@@ -247,10 +247,10 @@ TEST_F(AreaLights, TheCornellLampsDirectLightMatchesThePathTracer) {
     const Image reference = readPfm(std::string(VCT_SOURCE_DIR) + "/assets/reference/cornell-emissive-direct.pfm");
     double room = 0.0, referenceRoom = 0.0;
     for (size_t i = 0; i < reference.rgb.size(); i += 3) {
-        const float lum = 0.2126f * reference.rgb[i] + 0.7152f * reference.rgb[i + 1] + 0.0722f * reference.rgb[i + 2];
+        const double lum = luminance(&reference.rgb[i]);
         if (lum > 30.0f) continue;  // the patch (radiance 293) and its edge pixels
         referenceRoom += lum;
-        room += 0.2126f * image.rgb[i] + 0.7152f * image.rgb[i + 1] + 0.0722f * image.rgb[i + 2];
+        room += luminance(&image.rgb[i]);
     }
     const bench::ImageError error = bench::compareImages(image, reference);
     std::printf("[ area light ] Cornell lamp's direct light: room %.4f of the reference, relMSE %.4f\n",

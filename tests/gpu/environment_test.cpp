@@ -11,6 +11,7 @@
 
 #include "../cpu/environment_images.h"
 #include "gpu_test.h"
+#include "luminance.h"
 #include "path_tracer.h"
 #include "render/renderer.h"
 
@@ -269,8 +270,7 @@ TEST_F(Environment, AnImagesSunCastsTheShadowThePathTracerSees) {
     // into the box's umbra and the sunlit ground. (The painted sun is 22° wide: the truth's
     // penumbra is wide, the directional light's narrow; the pixels between are left out.)
     auto luminance = [](const Image& from, uint32_t x, uint32_t y) {
-        const glm::vec3 c = glm::make_vec3(from.pixel(x, y));
-        return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+        return glsl::luminance(glm::make_vec3(from.pixel(x, y)));
     };
     double litTruth = 0.0, litSeen = 0.0, shadowTruth = 0.0, shadowSeen = 0.0;
     int lit = 0, shadowed = 0;

@@ -4,12 +4,13 @@
 #include <cmath>
 
 #include "brdf.h"
+#include "luminance.h"
 #include "sampling.h"
 
 namespace vct::pt {
 namespace {
 
-float luminance(const glm::vec3& c) { return glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
+using glsl::luminance;
 
 bool finitePositive(float x) { return x > 0.0f && std::isfinite(x); }
 

@@ -12,6 +12,7 @@
 #include "bsdf.h"
 #include "error.h"
 #include "lights.h"
+#include "luminance.h"
 #include "normal_map.h"
 #include "scene/material_textures.h"
 
@@ -23,7 +24,7 @@ constexpr uint32_t kSamplesPerPass = 4;
 constexpr double kRelativeNoiseEpsilon = 0.01;         // keeps black pixels from dividing by zero
 constexpr uint64_t kPixelOffsetStream = ~uint64_t(0);  // a stream no sample index reaches
 
-float luminance(const glm::vec3& c) { return glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
+using glsl::luminance;
 
 bool isBlack(const glm::vec3& c) { return c.x <= 0.0f && c.y <= 0.0f && c.z <= 0.0f; }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "equirectangular.h"
+#include "luminance.h"
 #include "sampling.h"
 #include "scene/environment_map.h"
 
@@ -23,7 +24,7 @@ SkyDistribution buildSkyDistribution(const Scene& scene) {
     SkyDistribution sky;
     const EnvironmentMap* map = scene.environmentMap.get();
     if (!map || map->width == 0 || map->height == 0) return sky;
-    const glm::dvec3 toLuminance = glm::dvec3(0.2126, 0.7152, 0.0722) * glm::dvec3(scene.environment);
+    const glm::dvec3 toLuminance = glm::dvec3(glsl::REC709_LUMINANCE) * glm::dvec3(scene.environment);
     sky.columns = std::min(map->width, kMaxColumns);
     sky.rows = std::min(map->height, kMaxRows);
     sky.turns = environmentTurns(scene.environmentRotation);
