@@ -11,13 +11,13 @@
 
 layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba8) uniform readonly image3D voxelAlbedo;
-layout(set = 0, binding = 2, rgba16f) uniform readonly image3D voxelNormal;
-layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D gatheredLight;
-layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
-layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
-layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = VOXEL_ALBEDO_BINDING, rgba8) uniform readonly image3D voxelAlbedo;
+layout(set = 0, binding = VOXEL_NORMAL_BINDING, rgba16f) uniform readonly image3D voxelNormal;
+layout(set = 0, binding = GATHERED_LIGHT_BINDING, rgba16f) uniform writeonly image3D gatheredLight;
+layout(set = 0, binding = VOXEL_RADIANCE_BINDING) uniform sampler3D voxelRadiance;
+layout(std430, set = 0, binding = OCCUPIED_VOXELS_BINDING) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
+layout(std430, set = 0, binding = OCCUPIED_LIST_BINDING) readonly buffer Occupied { WorkListHeader occupied; };
 #include "directional_voxels.glsl"
 layout(push_constant) uniform Push {
     uint sliceCount;

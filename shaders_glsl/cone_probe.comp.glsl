@@ -5,8 +5,8 @@
 #include "gpu_types.h"
 
 layout(local_size_x = 64) in;
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = VOXEL_RADIANCE_BINDING) uniform sampler3D voxelRadiance;
 #include "directional_voxels.glsl"
 
 struct ConeProbe {
@@ -14,8 +14,8 @@ struct ConeProbe {
                      // 2 = that set leaving a surface `direction.w` voxels below the origin
     vec4 direction;  // xyz unit direction (the normal for a diffuse set), w tan(half-aperture) of one cone
 };
-layout(std430, set = 0, binding = 2) readonly buffer Probes { ConeProbe probes[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer Results { vec4 results[]; };  // radiance, occlusion
+layout(std430, set = 0, binding = CONE_PROBES_BINDING) readonly buffer Probes { ConeProbe probes[]; };
+layout(std430, set = 0, binding = CONE_PROBE_RESULTS_BINDING) writeonly buffer Results { vec4 results[]; };  // radiance, occlusion
 layout(push_constant) uniform Push { uint probeCount; };
 
 // Where a cone meets a surface, on which side (cone_tracing.glsl): the probes' volumes have no

@@ -80,6 +80,8 @@ struct ConeResult {
     float occlusion;  // 0..1, with the distance falloff applied
 };
 
+// Whether a cone skips empty space through the coarse mips. A specialization constant, not a frame
+// constant: lavapipe runs the test and the skip at every step even where it is off.
 layout(constant_id = SKIP_EMPTY_SPACE_CONSTANT_ID) const bool SKIP_EMPTY_SPACE = true;
 
 // Marches one cone from `origin` (world) along unit `direction`. The sample footprint grows with

@@ -7,17 +7,17 @@
 
 layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D diffuse;
-layout(std430, set = 0, binding = 2) writeonly buffer Fallback { uint fallbackSamples[]; };
-layout(std430, set = 0, binding = 3) buffer FallbackList { WorkListHeader fallback; };
-layout(std430, set = 0, binding = 4) readonly buffer Edge { uint edgeSamples[]; };
-layout(std430, set = 0, binding = 5) readonly buffer EdgeList { WorkListHeader edge; };
-layout(set = 0, binding = 6) uniform sampler2D gPosition;
-layout(set = 0, binding = 7) uniform sampler2D gNormal;
-layout(set = 0, binding = 12) uniform sampler2D lastDiffuse;
-layout(set = 0, binding = 13) uniform sampler2D lastPosition;  // the last frame's G-buffer
-layout(set = 0, binding = 14) uniform sampler2D lastNormal;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = DIFFUSE_SAMPLES_BINDING, rgba32f) uniform writeonly image2D diffuse;
+layout(std430, set = 0, binding = FALLBACK_SAMPLES_BINDING) writeonly buffer Fallback { uint fallbackSamples[]; };
+layout(std430, set = 0, binding = FALLBACK_LIST_BINDING) buffer FallbackList { WorkListHeader fallback; };
+layout(std430, set = 0, binding = EDGE_SAMPLES_BINDING) readonly buffer Edge { uint edgeSamples[]; };
+layout(std430, set = 0, binding = EDGE_LIST_BINDING) readonly buffer EdgeList { WorkListHeader edge; };
+layout(set = 0, binding = G_POSITION_BINDING) uniform sampler2D gPosition;
+layout(set = 0, binding = G_NORMAL_BINDING) uniform sampler2D gNormal;
+layout(set = 0, binding = LAST_DIFFUSE_SAMPLES_BINDING) uniform sampler2D lastDiffuse;
+layout(set = 0, binding = LAST_G_POSITION_BINDING) uniform sampler2D lastPosition;  // the last frame's G-buffer
+layout(set = 0, binding = LAST_G_NORMAL_BINDING) uniform sampler2D lastNormal;
 layout(push_constant) uniform Push {
     mat4 lastViewProjection;
     uint groupLimit;

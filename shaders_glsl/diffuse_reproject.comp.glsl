@@ -6,17 +6,17 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D gathered;
-layout(std430, set = 0, binding = 2) writeonly buffer Traced { uint tracedSamples[]; };
-layout(std430, set = 0, binding = 3) buffer TracedList { WorkListHeader traced; };
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D representatives;
-layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D representativeNormals;
-layout(set = 0, binding = 6) uniform sampler2D gPosition;
-layout(set = 0, binding = 7) uniform sampler2D gNormal;
-layout(set = 0, binding = 8) uniform sampler2D lastGathered;
-layout(set = 0, binding = 9) uniform sampler2D lastRepresentatives;
-layout(set = 0, binding = 10) uniform sampler2D lastRepresentativeNormals;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = REDUCED_LIGHT_BINDING, rgba32f) uniform writeonly image2D gathered;
+layout(std430, set = 0, binding = TRACED_SAMPLES_BINDING) writeonly buffer Traced { uint tracedSamples[]; };
+layout(std430, set = 0, binding = TRACED_LIST_BINDING) buffer TracedList { WorkListHeader traced; };
+layout(set = 0, binding = REDUCED_POSITIONS_BINDING, rgba32f) uniform writeonly image2D representatives;
+layout(set = 0, binding = REDUCED_NORMALS_BINDING, rgba32f) uniform writeonly image2D representativeNormals;
+layout(set = 0, binding = G_POSITION_BINDING) uniform sampler2D gPosition;
+layout(set = 0, binding = G_NORMAL_BINDING) uniform sampler2D gNormal;
+layout(set = 0, binding = LAST_REDUCED_LIGHT_BINDING) uniform sampler2D lastGathered;
+layout(set = 0, binding = LAST_REDUCED_POSITIONS_BINDING) uniform sampler2D lastRepresentatives;
+layout(set = 0, binding = LAST_REDUCED_NORMALS_BINDING) uniform sampler2D lastRepresentativeNormals;
 layout(push_constant) uniform Push {
     mat4 lastViewProjection;
     uint groupLimit;

@@ -7,14 +7,14 @@
 
 layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D target;
-layout(std430, set = 0, binding = 2) readonly buffer Samples { uint listedSamples[]; };
-layout(std430, set = 0, binding = 3) readonly buffer SampleList { WorkListHeader list; };
-layout(set = 0, binding = 6) uniform sampler2D gPosition;
-layout(set = 0, binding = 7) uniform sampler2D gNormal;
-layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
-layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = LISTED_TARGET_BINDING, rgba32f) uniform writeonly image2D target;
+layout(std430, set = 0, binding = LISTED_SAMPLES_BINDING) readonly buffer Samples { uint listedSamples[]; };
+layout(std430, set = 0, binding = LISTED_SAMPLES_LIST_BINDING) readonly buffer SampleList { WorkListHeader list; };
+layout(set = 0, binding = G_POSITION_BINDING) uniform sampler2D gPosition;
+layout(set = 0, binding = G_NORMAL_BINDING) uniform sampler2D gNormal;
+layout(set = 0, binding = VOXEL_RADIANCE_BINDING) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = VOXEL_NORMAL_BINDING) uniform sampler3D voxelNormal;
 layout(push_constant) uniform Push { uint targetDownscale; };
 #include "directional_voxels.glsl"
 

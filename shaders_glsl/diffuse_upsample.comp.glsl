@@ -11,15 +11,15 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D diffuse;
-layout(std430, set = 0, binding = 2) writeonly buffer Edge { uint edgeSamples[]; };
-layout(std430, set = 0, binding = 3) buffer EdgeList { WorkListHeader edge; };
-layout(set = 0, binding = 6) uniform sampler2D gPosition;
-layout(set = 0, binding = 7) uniform sampler2D gNormal;
-layout(set = 0, binding = 8) uniform sampler2D gathered;
-layout(set = 0, binding = 9) uniform sampler2D representatives;
-layout(set = 0, binding = 10) uniform sampler2D representativeNormals;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = DIFFUSE_SAMPLES_BINDING, rgba32f) uniform writeonly image2D diffuse;
+layout(std430, set = 0, binding = EDGE_SAMPLES_BINDING) writeonly buffer Edge { uint edgeSamples[]; };
+layout(std430, set = 0, binding = EDGE_LIST_BINDING) buffer EdgeList { WorkListHeader edge; };
+layout(set = 0, binding = G_POSITION_BINDING) uniform sampler2D gPosition;
+layout(set = 0, binding = G_NORMAL_BINDING) uniform sampler2D gNormal;
+layout(set = 0, binding = REDUCED_LIGHT_BINDING) uniform sampler2D gathered;
+layout(set = 0, binding = REDUCED_POSITIONS_BINDING) uniform sampler2D representatives;
+layout(set = 0, binding = REDUCED_NORMALS_BINDING) uniform sampler2D representativeNormals;
 layout(push_constant) uniform Push {
     mat4 lastViewProjection;
     uint groupLimit;

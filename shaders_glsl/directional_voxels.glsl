@@ -9,6 +9,6 @@
 const uint AXIS_X = 0u;
 const uint AXIS_Y = 1u;
 const uint AXIS_Z = 2u;
-layout(set = 0, binding = 12) uniform sampler3D directionalVoxels[3];
+layout(set = 0, binding = DIRECTIONAL_VOXELS_BINDING) uniform sampler3D directionalVoxels[3];
 
 #endif

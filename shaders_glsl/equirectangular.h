@@ -9,9 +9,6 @@
 
 VCT_SHARED_BEGIN
 
-// The binding of the environment image (sky.glsl) in every pass that traces cones or shows the sky.
-const uint SKY_BINDING = 30u;
-
 // (u, v) of the unit `direction` in an image turned `turns` of a full turn about +Y, counter-clockwise
 // seen from above (a right-handed rotation: a quarter turn brings what the image shows along −Z to
 // −X). v is in [0, 1]; u in [0, 2), for a sampler that repeats it.

@@ -11,17 +11,17 @@
 #include "normal_map.h"
 #include "gbuffer_packing.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = MATERIALS_BINDING) readonly buffer Materials { GpuMaterial materials[]; };
 // Triangles are drawn one material at a time, so the texture index is dynamically uniform
 // (no descriptor-indexing feature needed: lavapipe has none).
 layout(push_constant) uniform Push { uint materialIndex; };
-layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
+layout(constant_id = TEXTURE_COUNT_CONSTANT_ID) const uint TEXTURE_COUNT = 1;
 // True in the pipeline that draws MASK and BLEND materials: only it may discard, so the opaque
 // materials' pipeline keeps its early depth test.
-layout(constant_id = 1) const bool ALPHA_TESTED = false;
+layout(constant_id = ALPHA_TESTED_CONSTANT_ID) const bool ALPHA_TESTED = false;
 // Base colour and emissive (sRGB), metallic-roughness (linear): the image's format decodes each.
-layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
+layout(set = TEXTURES_SET, binding = COLOR_TEXTURES_BINDING) uniform sampler2D colorTextures[TEXTURE_COUNT];
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;

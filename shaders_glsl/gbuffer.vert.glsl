@@ -3,8 +3,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Vertices { GpuVertex vertices[]; };
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = VERTICES_BINDING) readonly buffer Vertices { GpuVertex vertices[]; };
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;

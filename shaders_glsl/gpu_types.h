@@ -3,6 +3,7 @@
 #ifndef VCT_GPU_TYPES_H
 #define VCT_GPU_TYPES_H
 
+#include "bindings.h"
 #include "cpp_glsl.h"
 #include "texture_transform.h"
 #include "voxel_grid.h"
@@ -86,10 +87,6 @@ const uint ANISOTROPIC_VOXELS = 1024u;
 // The flags the voxels' light depends on (inject.comp.glsl): a change converges it again.
 const uint VOXEL_LIGHT_FLAGS = USE_SHADOWS | USE_AREA_LIGHTS;
 
-// The specialization constant of every shader that traces cones (cone_tracing.glsl): whether a cone
-// skips empty space through the coarse mips. A constant, not a frame constant: lavapipe runs the
-// test and the skip at every step even where it is off.
-#define SKIP_EMPTY_SPACE_CONSTANT_ID 7
 
 // The frame's constants, one uniform block (std140: every member sits at its natural offset, which
 // the C++ side checks with static_asserts).

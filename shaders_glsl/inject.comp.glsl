@@ -13,26 +13,26 @@
 
 layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 2) readonly buffer ShadowViews { ShadowView shadowViews[]; };
-layout(set = 0, binding = 3) uniform sampler2DArrayShadow sunShadowMaps;
-layout(set = 0, binding = 4) uniform sampler2DArrayShadow localShadowMaps;
-layout(set = 0, binding = 5, rgba8) uniform readonly image3D voxelAlbedo;
-layout(set = 0, binding = 6, rgba16f) uniform readonly image3D voxelNormal;
-layout(std430, set = 0, binding = 7) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
-layout(set = 0, binding = 8, rgba16f) uniform writeonly image3D radiance;
-layout(set = 0, binding = 9, rgba16f) uniform readonly image3D gatheredLight;
-layout(std430, set = 0, binding = 10) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
-layout(std430, set = 0, binding = 11) readonly buffer Occupied { WorkListHeader occupied; };
-layout(set = 0, binding = 12, rgba16f) uniform readonly image3D voxelEmission;
-layout(set = 0, binding = 13) uniform sampler2DArrayShadow areaShadowMaps;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = LIGHTS_BINDING) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, set = 0, binding = SHADOW_VIEWS_BINDING) readonly buffer ShadowViews { ShadowView shadowViews[]; };
+layout(set = 0, binding = SUN_SHADOW_MAPS_BINDING) uniform sampler2DArrayShadow sunShadowMaps;
+layout(set = 0, binding = LOCAL_SHADOW_MAPS_BINDING) uniform sampler2DArrayShadow localShadowMaps;
+layout(set = 0, binding = VOXEL_ALBEDO_BINDING, rgba8) uniform readonly image3D voxelAlbedo;
+layout(set = 0, binding = VOXEL_NORMAL_BINDING, rgba16f) uniform readonly image3D voxelNormal;
+layout(std430, set = 0, binding = EMITTER_TRIANGLES_BINDING) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
+layout(set = 0, binding = VOXEL_RADIANCE_BINDING, rgba16f) uniform writeonly image3D radiance;
+layout(set = 0, binding = GATHERED_LIGHT_BINDING, rgba16f) uniform readonly image3D gatheredLight;
+layout(std430, set = 0, binding = OCCUPIED_VOXELS_BINDING) readonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
+layout(std430, set = 0, binding = OCCUPIED_LIST_BINDING) readonly buffer Occupied { WorkListHeader occupied; };
+layout(set = 0, binding = VOXEL_EMISSION_BINDING, rgba16f) uniform readonly image3D voxelEmission;
+layout(set = 0, binding = AREA_SHADOW_MAPS_BINDING) uniform sampler2DArrayShadow areaShadowMaps;
 // The area lights' irradiance at each listed voxel (three floats an item), kept between injections:
 // it changes only with the voxels, the area lights' maps or the components shown, and it is most of
 // an injection's cost where there are area lights. A pipeline of its own reads it (lavapipe would
 // run the area lights' code beside the read); this one writes it.
-layout(std430, set = 0, binding = 14) buffer AreaLightCache { float keptAreaLight[]; };
-layout(constant_id = 0) const bool AREA_LIGHTS_CACHED = false;
+layout(std430, set = 0, binding = AREA_LIGHT_CACHE_BINDING) buffer AreaLightCache { float keptAreaLight[]; };
+layout(constant_id = AREA_LIGHTS_CACHED_CONSTANT_ID) const bool AREA_LIGHTS_CACHED = false;
 layout(push_constant) uniform Push { uint addGathered; };
 
 #include "voxel_grid.h"

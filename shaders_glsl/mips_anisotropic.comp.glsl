@@ -20,22 +20,23 @@
 // composite an opaque one carries forward (below), was the walk's last step. On lavapipe this is a
 // quarter of the reads of one invocation per texel and direction.
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "directional_chains.h"
 #include "work_list.h"
 
 layout(local_size_x = WORK_LIST_GROUP_SIZE) in;
 // The axis's two chains, one level and the next coarser (directional_chains.h).
-layout(set = 0, binding = 0, rgba16f) uniform readonly image3D finer;
-layout(set = 0, binding = 1, rgba16f) uniform writeonly image3D coarser;
+layout(set = 0, binding = FINER_LEVEL_BINDING, rgba16f) uniform readonly image3D finer;
+layout(set = 0, binding = COARSER_LEVEL_BINDING, rgba16f) uniform writeonly image3D coarser;
 // The scene voxels' mean normals (not renormalized), read when the finer level is the grid's level 0.
-layout(set = 0, binding = 2, rgba16f) uniform readonly image3D sceneNormal;
+layout(set = 0, binding = VOXEL_NORMAL_BINDING, rgba16f) uniform readonly image3D sceneNormal;
 // Whether the finer level is the grid's level 0 (`finer` is then that level, the same for both
 // directions): a pipeline each, since lavapipe reads the normals under a branch that skips them anyway.
-layout(constant_id = 0) const bool FINER_IS_SCENE_LEVEL = false;
+layout(constant_id = FINER_IS_SCENE_LEVEL_CONSTANT_ID) const bool FINER_IS_SCENE_LEVEL = false;
 // Where cones leave surfaces (voxel_volumes.h): bit 0 along +axis, bit 1 along −axis; the finer
 // level's flags (not read when the finer level is the scene's) and this level's.
-layout(set = 0, binding = 3, r32ui) uniform readonly uimage3D finerLeaving;
-layout(set = 0, binding = 4, r32ui) uniform writeonly uimage3D coarserLeaving;
+layout(set = 0, binding = FINER_LEAVING_BINDING, r32ui) uniform readonly uimage3D finerLeaving;
+layout(set = 0, binding = COARSER_LEAVING_BINDING, r32ui) uniform writeonly uimage3D coarserLeaving;
 const uint LEAVING_POSITIVE = 1u;
 const uint LEAVING_NEGATIVE = 2u;
 layout(push_constant) uniform Push {

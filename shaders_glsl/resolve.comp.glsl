@@ -3,9 +3,11 @@
 // samples, so a pixel means the mean radiance over its area, as the path tracer computes it. With
 // still frames to average (ShadingSettings::diffuseConeTurns), the output keeps their running mean:
 // the frame's share is `weight` (1 / frames averaged so far; 1 replaces what was there).
+#extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform sampler2D supersampled;
-layout(set = 0, binding = 1, rgba32f) uniform image2D resolved;
+layout(set = 0, binding = SUPERSAMPLED_BINDING) uniform sampler2D supersampled;
+layout(set = 0, binding = RESOLVED_BINDING, rgba32f) uniform image2D resolved;
 layout(push_constant) uniform Push {
     uint factor;
     float weight;

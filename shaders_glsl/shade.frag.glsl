@@ -4,46 +4,46 @@
 #include "gpu_types.h"
 #include "gbuffer_packing.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 3) readonly buffer ShadowViews { ShadowView shadowViews[]; };
-layout(set = 0, binding = 4) uniform sampler2DArrayShadow sunShadowMaps;
-layout(set = 0, binding = 5) uniform sampler2DArrayShadow localShadowMaps;
-layout(set = 0, binding = 6) uniform sampler2D gPosition;
-layout(set = 0, binding = 7) uniform sampler2D gNormal;  // xyz, w = gbufferSideOcclusion
-layout(set = 0, binding = 8) uniform sampler2D gBaseColor;  // rgb, metallic
-layout(set = 0, binding = 9) uniform sampler3D voxelRadiance;
-layout(set = 0, binding = 10) uniform sampler3D voxelAlbedo;
-layout(set = 0, binding = 11) uniform sampler3D voxelNormal;
+layout(set = 0, binding = FRAME_BINDING) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = MATERIALS_BINDING) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = LIGHTS_BINDING) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, set = 0, binding = SHADOW_VIEWS_BINDING) readonly buffer ShadowViews { ShadowView shadowViews[]; };
+layout(set = 0, binding = SUN_SHADOW_MAPS_BINDING) uniform sampler2DArrayShadow sunShadowMaps;
+layout(set = 0, binding = LOCAL_SHADOW_MAPS_BINDING) uniform sampler2DArrayShadow localShadowMaps;
+layout(set = 0, binding = G_POSITION_BINDING) uniform sampler2D gPosition;
+layout(set = 0, binding = G_NORMAL_BINDING) uniform sampler2D gNormal;  // xyz, w = gbufferSideOcclusion
+layout(set = 0, binding = G_BASE_COLOR_BINDING) uniform sampler2D gBaseColor;  // rgb, metallic
+layout(set = 0, binding = VOXEL_RADIANCE_BINDING) uniform sampler3D voxelRadiance;
+layout(set = 0, binding = VOXEL_ALBEDO_BINDING) uniform sampler3D voxelAlbedo;
+layout(set = 0, binding = VOXEL_NORMAL_BINDING) uniform sampler3D voxelNormal;
 #include "directional_voxels.glsl"
 // The reduced diffuse cones' result per sample, where TRACES_DIFFUSE_CONES is false.
-layout(set = 0, binding = 13) uniform sampler2D reducedDiffuse;
+layout(set = 0, binding = DIFFUSE_SAMPLES_BINDING) uniform sampler2D reducedDiffuse;
 // The shadow maps' depths, for the PCF kernel's blocker search (shadows.glsl).
-layout(set = 0, binding = 14) uniform sampler2DArray sunShadowDepths;
-layout(set = 0, binding = 15) uniform sampler2DArray localShadowDepths;
-layout(set = 0, binding = 16) uniform sampler2D gEmissive;  // the emissive texture's colour, roughness
-layout(std430, set = 0, binding = 17) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
-layout(set = 0, binding = 18) uniform sampler2DArrayShadow areaShadowMaps;
-layout(set = 0, binding = 19) uniform sampler2DArray areaShadowDepths;
+layout(set = 0, binding = SUN_SHADOW_DEPTHS_BINDING) uniform sampler2DArray sunShadowDepths;
+layout(set = 0, binding = LOCAL_SHADOW_DEPTHS_BINDING) uniform sampler2DArray localShadowDepths;
+layout(set = 0, binding = G_EMISSIVE_BINDING) uniform sampler2D gEmissive;  // the emissive texture's colour, roughness
+layout(std430, set = 0, binding = EMITTER_TRIANGLES_BINDING) readonly buffer EmitterTriangles { GpuEmitterTriangle emitterTriangles[]; };
+layout(set = 0, binding = AREA_SHADOW_MAPS_BINDING) uniform sampler2DArrayShadow areaShadowMaps;
+layout(set = 0, binding = AREA_SHADOW_DEPTHS_BINDING) uniform sampler2DArray areaShadowDepths;
 #include "ltc.h"
 // The area lights' GGX table of linearly transformed cosines (src/render/ltc_table.h).
-layout(std430, set = 0, binding = 20) readonly buffer LtcTable { GpuLtcEntry ltcTable[]; };
+layout(std430, set = 0, binding = LTC_TABLE_BINDING) readonly buffer LtcTable { GpuLtcEntry ltcTable[]; };
 #define AREA_LIGHT_SPECULAR
 #define SHADOW_BLOCKER_SEARCH
 // Whether the scene has area lights (with the component on): without them their code, which
 // costs lavapipe even where it never runs (a 1280×720 frame's shading took 6× longer), is left out.
-layout(constant_id = 3) const bool WITH_AREA_LIGHTS = true;
+layout(constant_id = WITH_AREA_LIGHTS_CONSTANT_ID) const bool WITH_AREA_LIGHTS = true;
 #define AREA_LIGHTS_COMPILED WITH_AREA_LIGHTS
 // Whether some sun, and some spot or point light, casts shadows: the maps of a kind the scene
 // lacks are not read (lavapipe would read them at every PCF tap).
-layout(constant_id = 4) const bool WITH_SUN_SHADOWS = true;
-layout(constant_id = 5) const bool WITH_LOCAL_SHADOWS = true;
+layout(constant_id = WITH_SUN_SHADOWS_CONSTANT_ID) const bool WITH_SUN_SHADOWS = true;
+layout(constant_id = WITH_LOCAL_SHADOWS_CONSTANT_ID) const bool WITH_LOCAL_SHADOWS = true;
 #define SUN_SHADOWS_COMPILED WITH_SUN_SHADOWS
 #define LOCAL_SHADOWS_COMPILED WITH_LOCAL_SHADOWS
 // Whether some material reflects specularly: the area lights' GGX highlights are left out of a
 // scene of Lambertian surfaces, where they are zero (tile-room's shading 62 -> 52 ms at 128²).
-layout(constant_id = 6) const bool WITH_AREA_LIGHT_SPECULAR = true;
+layout(constant_id = WITH_AREA_LIGHT_SPECULAR_CONSTANT_ID) const bool WITH_AREA_LIGHT_SPECULAR = true;
 #define AREA_LIGHT_SPECULAR_COMPILED WITH_AREA_LIGHT_SPECULAR
 
 // Where a cone meets a surface, on which side (cone_tracing.glsl).
@@ -59,9 +59,9 @@ layout(location = 0) out vec4 outRadiance;
 // What this pipeline can run (ShadePass builds one per combination a frame asks for). Code that a
 // frame skips still costs lavapipe: every inlined cone loop widens the SIMD fragment program, and
 // the still frame of a 1280×720 image took 340 ms with all of it against 115 ms with none.
-layout(constant_id = 0) const bool WITH_DEBUG_VIEWS = true;
-layout(constant_id = 1) const bool TRACES_DIFFUSE_CONES = true;  // false: reads reducedDiffuse
-layout(constant_id = 2) const bool TRACES_SPECULAR_CONE = true;
+layout(constant_id = WITH_DEBUG_VIEWS_CONSTANT_ID) const bool WITH_DEBUG_VIEWS = true;
+layout(constant_id = TRACES_DIFFUSE_CONES_CONSTANT_ID) const bool TRACES_DIFFUSE_CONES = true;  // false: reads reducedDiffuse
+layout(constant_id = TRACES_SPECULAR_CONE_CONSTANT_ID) const bool TRACES_SPECULAR_CONE = true;
 
 // Indirect light gathered by cones, split like the direct light into diffuse and specular parts.
 // The split of reflected energy between the two lobes uses the GGX directional albedo.

@@ -3,8 +3,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.h"
 
-layout(std430, set = 0, binding = 0) readonly buffer Vertices { GpuVertex vertices[]; };
-layout(std430, set = 0, binding = 1) readonly buffer ShadowViews { ShadowView shadowViews[]; };
+layout(std430, set = 0, binding = VERTICES_BINDING) readonly buffer Vertices { GpuVertex vertices[]; };
+layout(std430, set = 0, binding = SHADOW_VIEWS_BINDING) readonly buffer ShadowViews { ShadowView shadowViews[]; };
 layout(push_constant) uniform Push { uint viewIndex; };
 
 void main() {

@@ -10,13 +10,13 @@
 #include "alpha_coverage.h"
 #include "gpu_types.h"
 
-layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = MATERIALS_BINDING) readonly buffer Materials { GpuMaterial materials[]; };
 layout(push_constant) uniform Push {
     uint viewIndex;
     uint materialIndex;  // drawn one material at a time: the texture index is dynamically uniform
 };
-layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
-layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
+layout(constant_id = TEXTURE_COUNT_CONSTANT_ID) const uint TEXTURE_COUNT = 1;
+layout(set = TEXTURES_SET, binding = COLOR_TEXTURES_BINDING) uniform sampler2D colorTextures[TEXTURE_COUNT];
 
 layout(location = 0) in vec4 texCoords;  // xy TEXCOORD_0, zw TEXCOORD_1
 

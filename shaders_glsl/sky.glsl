@@ -6,6 +6,7 @@
 #ifndef VCT_SKY_GLSL
 #define VCT_SKY_GLSL
 
+#include "bindings.h"
 #include "equirectangular.h"
 
 layout(set = 0, binding = SKY_BINDING) uniform sampler2D environmentMap;

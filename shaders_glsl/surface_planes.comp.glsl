@@ -3,12 +3,13 @@
 // (voxel_resolve.comp) and the light of radiance level 0; one invocation per voxel, after each
 // injection. The mip chain follows (mips.comp).
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "surface_planes.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(set = 0, binding = 0, rgba16f) uniform readonly image3D radiance;  // level 0
-layout(set = 0, binding = 1, rgba16f) uniform readonly image3D normalSurface;
-layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D planes;
+layout(set = 0, binding = VOXEL_RADIANCE_BINDING, rgba16f) uniform readonly image3D radiance;  // level 0
+layout(set = 0, binding = VOXEL_NORMAL_BINDING, rgba16f) uniform readonly image3D normalSurface;
+layout(set = 0, binding = SURFACE_PLANES_BINDING, rgba16f) uniform writeonly image3D planes;
 
 void main() {
     ivec3 voxel = ivec3(gl_GlobalInvocationID);

@@ -13,13 +13,11 @@
 #ifndef VCT_SURFACE_PLANES_H
 #define VCT_SURFACE_PLANES_H
 
+#include "bindings.h"
 #include "cpp_glsl.h"
 #include "luminance.h"
 
 VCT_SHARED_BEGIN
-
-// The binding of the surface planes (a sampler3D) in every pass that traces cones with rays.
-const uint SURFACE_PLANES_BINDING = 21u;
 
 // The weight of a voxel's plane per unit of its light's luminance as the radiance volume stores it.
 // The brightest voxel stores up to 1024 (radianceStorageScale), and a plane's offset reaches 221

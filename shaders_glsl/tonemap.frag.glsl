@@ -4,10 +4,11 @@
 // Debug views that hold colours already (base colour, normals, depth, AO, voxel albedo and normal)
 // skip the tone curve so their values read directly.
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "present.h"
 #include "tone_curve.h"
 
-layout(set = 0, binding = 0) uniform sampler2D radiance;
+layout(set = 0, binding = DISPLAYED_BINDING) uniform sampler2D radiance;
 layout(push_constant) uniform Push { TonemapPush push; };
 layout(location = 0) out vec4 color;
 

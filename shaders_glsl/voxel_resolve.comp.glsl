@@ -14,16 +14,17 @@
 // was would stay. Where a voxel stays occupied its old light stays too: a bounce gathered from the
 // last frame's light (the viewer) still has it when an object moves.
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "voxelize.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(std430, set = 0, binding = 0) readonly buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
-layout(set = 0, binding = 1, rgba8) uniform writeonly image3D albedoOpacity;
-layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D normalSurface;
-layout(set = 0, binding = 3, rgba16f) uniform writeonly image3D emission;
-layout(std430, set = 0, binding = 4) writeonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
-layout(std430, set = 0, binding = 5) buffer Occupied { WorkListHeader occupied; };
-layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D lightVolumes[2];  // radiance level 0, next bounce
+layout(std430, set = 0, binding = VOXEL_ACCUMULATION_BINDING) readonly buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
+layout(set = 0, binding = VOXEL_ALBEDO_BINDING, rgba8) uniform writeonly image3D albedoOpacity;
+layout(set = 0, binding = VOXEL_NORMAL_BINDING, rgba16f) uniform writeonly image3D normalSurface;
+layout(set = 0, binding = VOXEL_EMISSION_BINDING, rgba16f) uniform writeonly image3D emission;
+layout(std430, set = 0, binding = OCCUPIED_VOXELS_BINDING) writeonly buffer OccupiedVoxels { uint occupiedVoxels[]; };
+layout(std430, set = 0, binding = OCCUPIED_LIST_BINDING) buffer Occupied { WorkListHeader occupied; };
+layout(set = 0, binding = LIGHT_VOLUMES_BINDING, rgba16f) uniform writeonly image3D lightVolumes[2];  // radiance level 0, next bounce
 layout(push_constant) uniform Push { VoxelizeParams params; };
 
 vec3 channelMean(uint first, uint index, float divisor, bool isSigned) {

@@ -20,21 +20,21 @@
 #include "triangle_box.glsl"
 
 layout(local_size_x = VOXELIZE_TILE, local_size_y = VOXELIZE_TILE, local_size_z = VOXELIZE_TILE) in;
-layout(std430, set = 0, binding = 0) readonly buffer Vertices { GpuVertex vertices[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Indices { uint indices[]; };
-layout(std430, set = 0, binding = 2) readonly buffer TriangleMaterials { uint triangleMaterials[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, set = 0, binding = 4) readonly buffer WorkItems { uvec2 workItems[]; };  // (triangle, packed tile)
-layout(std430, set = 0, binding = 5) buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
+layout(std430, set = 0, binding = VERTICES_BINDING) readonly buffer Vertices { GpuVertex vertices[]; };
+layout(std430, set = 0, binding = INDICES_BINDING) readonly buffer Indices { uint indices[]; };
+layout(std430, set = 0, binding = TRIANGLE_MATERIALS_BINDING) readonly buffer TriangleMaterials { uint triangleMaterials[]; };
+layout(std430, set = 0, binding = MATERIALS_BINDING) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = VOXELIZER_WORK_ITEMS_BINDING) readonly buffer WorkItems { uvec2 workItems[]; };  // (triangle, packed tile)
+layout(std430, set = 0, binding = VOXEL_ACCUMULATION_BINDING) buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS];
 layout(push_constant) uniform Push { VoxelizeParams params; };
 // The scene's base colour and emissive textures (SceneGpu::voxelTextureSet). A workgroup voxelizes
 // one triangle, so the material's texture index is dynamically uniform.
-layout(constant_id = 0) const uint TEXTURE_COUNT = 1;
-layout(set = 1, binding = 0) uniform sampler2D colorTextures[TEXTURE_COUNT];
+layout(constant_id = TEXTURE_COUNT_CONSTANT_ID) const uint TEXTURE_COUNT = 1;
+layout(set = TEXTURES_SET, binding = COLOR_TEXTURES_BINDING) uniform sampler2D colorTextures[TEXTURE_COUNT];
 // Whether the scene has a MASK material with a base colour texture: only then is the 16-sample
 // read of maskedOverVoxel compiled in (lavapipe ran it for every triangle, untaken: the Cornell box
 // at 64³ voxelized in 72-91 ms, against 41-50 ms without it).
-layout(constant_id = 1) const bool MASK_TEXTURES = false;
+layout(constant_id = MASK_TEXTURES_CONSTANT_ID) const bool MASK_TEXTURES = false;
 
 // Both texture-coordinate sets of a corner: xy TEXCOORD_0, zw TEXCOORD_1.
 vec4 cornerTexCoords(uint triangle, uint corner) {

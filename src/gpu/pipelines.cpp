@@ -349,4 +349,13 @@ VkSamplerCreateInfo volumeSampler() {
     return info;
 }
 
+std::vector<uint32_t> specializationConstants(std::initializer_list<std::pair<uint32_t, uint32_t>> byId) {
+    std::vector<uint32_t> constants;
+    for (const auto& [id, value] : byId) {
+        if (id >= constants.size()) constants.resize(id + 1, 0u);
+        constants[id] = value;
+    }
+    return constants;
+}
+
 }  // namespace vct

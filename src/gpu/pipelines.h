@@ -3,6 +3,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -110,6 +111,10 @@ public:
 private:
     VkDevice device_ = VK_NULL_HANDLE;
 };
+
+// Specialization constants named by id (shaders_glsl/bindings.h) as the pipelines take them:
+// element i is constant_id i (a uint, or a bool as VkBool32); ids not named are 0.
+std::vector<uint32_t> specializationConstants(std::initializer_list<std::pair<uint32_t, uint32_t>> byId);
 
 // A compute pipeline with its layout read from the shader (createShaderLayout), `laterSets` as its
 // sets 1, 2, … and `specialization` its constants (element i is constant_id i, a uint or VkBool32).

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 
+#include "bindings.h"
 #include "gpu_types.h"
 
 namespace vct {
 
 std::vector<uint32_t> coneTracingSpecialization(bool skipEmptySpace, std::vector<uint32_t> own) {
-    own.resize(std::max<size_t>(own.size(), SKIP_EMPTY_SPACE_CONSTANT_ID + 1), 0u);
-    own[SKIP_EMPTY_SPACE_CONSTANT_ID] = skipEmptySpace ? 1u : 0u;
+    own.resize(std::max<size_t>(own.size(), glsl::SKIP_EMPTY_SPACE_CONSTANT_ID + 1), 0u);
+    own[glsl::SKIP_EMPTY_SPACE_CONSTANT_ID] = skipEmptySpace ? 1u : 0u;
     return own;
 }
 

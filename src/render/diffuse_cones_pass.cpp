@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "surface_planes.h"
 #include "work_list.h"
@@ -120,15 +121,16 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         const Pipeline& traceList = traceListPipeline.get(skipEmptySpace);
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList.pipeline);
         DescriptorPush()
-            .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-            .storageImage(1, target.view)
-            .buffer(2, listed.buffer)
-            .buffer(3, list.buffer)
-            .sampledImage(6, gbuffer.position.view, point)
-            .sampledImage(7, gbuffer.normal.view, point)
-            .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes.directionalViews(), volumeSampler,
+                           VK_IMAGE_LAYOUT_GENERAL)
+            .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            .storageImage(glsl::LISTED_TARGET_BINDING, target.view)
+            .buffer(glsl::LISTED_SAMPLES_BINDING, listed.buffer)
+            .buffer(glsl::LISTED_SAMPLES_LIST_BINDING, list.buffer)
+            .sampledImage(glsl::G_POSITION_BINDING, gbuffer.position.view, point)
+            .sampledImage(glsl::G_NORMAL_BINDING, gbuffer.normal.view, point)
+            .sampledImage(glsl::VOXEL_RADIANCE_BINDING, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), volumeSampler,
                           VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
@@ -142,17 +144,17 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     for (const GpuImage* image : nowImages) beginWriting(commands, *image);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.pipeline);
     DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, now.light.view)
-        .buffer(2, tracedSamples.buffer)
-        .buffer(3, tracedList.buffer)
-        .storageImage(4, now.positions.view)
-        .storageImage(5, now.normals.view)
-        .sampledImage(6, gbuffer.position.view, point)
-        .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(8, last.light.view, point)
-        .sampledImage(9, last.positions.view, point)
-        .sampledImage(10, last.normals.view, point)
+        .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .storageImage(glsl::REDUCED_LIGHT_BINDING, now.light.view)
+        .buffer(glsl::TRACED_SAMPLES_BINDING, tracedSamples.buffer)
+        .buffer(glsl::TRACED_LIST_BINDING, tracedList.buffer)
+        .storageImage(glsl::REDUCED_POSITIONS_BINDING, now.positions.view)
+        .storageImage(glsl::REDUCED_NORMALS_BINDING, now.normals.view)
+        .sampledImage(glsl::G_POSITION_BINDING, gbuffer.position.view, point)
+        .sampledImage(glsl::G_NORMAL_BINDING, gbuffer.normal.view, point)
+        .sampledImage(glsl::LAST_REDUCED_LIGHT_BINDING, last.light.view, point)
+        .sampledImage(glsl::LAST_REDUCED_POSITIONS_BINDING, last.positions.view, point)
+        .sampledImage(glsl::LAST_REDUCED_NORMALS_BINDING, last.normals.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline);
     vkCmdPushConstants(commands, reprojectPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
@@ -166,15 +168,15 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     beginWriting(commands, nowSamples);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.pipeline);
     DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, nowSamples.view)
-        .buffer(2, edgeSamples.buffer)
-        .buffer(3, edgeList.buffer)
-        .sampledImage(6, gbuffer.position.view, point)
-        .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(8, now.light.view, point)
-        .sampledImage(9, now.positions.view, point)
-        .sampledImage(10, now.normals.view, point)
+        .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .storageImage(glsl::DIFFUSE_SAMPLES_BINDING, nowSamples.view)
+        .buffer(glsl::EDGE_SAMPLES_BINDING, edgeSamples.buffer)
+        .buffer(glsl::EDGE_LIST_BINDING, edgeList.buffer)
+        .sampledImage(glsl::G_POSITION_BINDING, gbuffer.position.view, point)
+        .sampledImage(glsl::G_NORMAL_BINDING, gbuffer.normal.view, point)
+        .sampledImage(glsl::REDUCED_LIGHT_BINDING, now.light.view, point)
+        .sampledImage(glsl::REDUCED_POSITIONS_BINDING, now.positions.view, point)
+        .sampledImage(glsl::REDUCED_NORMALS_BINDING, now.normals.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline);
     vkCmdPushConstants(commands, upsamplePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     // One invocation per cell between four representatives, from the one before the first.
@@ -185,17 +187,17 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     // 3b. The listed samples' own light of the last frame, or listed again to trace.
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline.pipeline);
     DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, nowSamples.view)
-        .buffer(2, fallbackSamples.buffer)
-        .buffer(3, fallbackList.buffer)
-        .buffer(4, edgeSamples.buffer)
-        .buffer(5, edgeList.buffer)
-        .sampledImage(6, gbuffer.position.view, point)
-        .sampledImage(7, gbuffer.normal.view, point)
-        .sampledImage(12, lastSamples.view, point)
-        .sampledImage(13, lastGBufferPosition.view, point)
-        .sampledImage(14, lastGBufferNormal.view, point)
+        .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .storageImage(glsl::DIFFUSE_SAMPLES_BINDING, nowSamples.view)
+        .buffer(glsl::FALLBACK_SAMPLES_BINDING, fallbackSamples.buffer)
+        .buffer(glsl::FALLBACK_LIST_BINDING, fallbackList.buffer)
+        .buffer(glsl::EDGE_SAMPLES_BINDING, edgeSamples.buffer)
+        .buffer(glsl::EDGE_LIST_BINDING, edgeList.buffer)
+        .sampledImage(glsl::G_POSITION_BINDING, gbuffer.position.view, point)
+        .sampledImage(glsl::G_NORMAL_BINDING, gbuffer.normal.view, point)
+        .sampledImage(glsl::LAST_DIFFUSE_SAMPLES_BINDING, lastSamples.view, point)
+        .sampledImage(glsl::LAST_G_POSITION_BINDING, lastGBufferPosition.view, point)
+        .sampledImage(glsl::LAST_G_NORMAL_BINDING, lastGBufferNormal.view, point)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline);
     vkCmdPushConstants(commands, edgeHistoryPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatchIndirect(commands, edgeList.buffer, 0);

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "bindings.h"
 #include "gpu/commands.h"
 
 namespace vct {
@@ -40,10 +41,12 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
     // Alpha-tested materials get a second pipeline: a shader that may discard tests depth only
     // after shading, and would cost the opaque materials their early depth test (6× the G-buffer
     // time of FlightHelmet on lavapipe when one pipeline drew them all).
-    desc.fragmentSpecialization = {scene.textureCount(), VK_FALSE};
+    desc.fragmentSpecialization = specializationConstants(
+        {{glsl::TEXTURE_COUNT_CONSTANT_ID, scene.textureCount()}, {glsl::ALPHA_TESTED_CONSTANT_ID, VK_FALSE}});
     pipeline = createGraphicsPipeline(context, desc, {scene.textureSetLayout});
     if (!scene.alphaTestedRanges.empty()) {
-        desc.fragmentSpecialization = {scene.textureCount(), VK_TRUE};
+        desc.fragmentSpecialization = specializationConstants(
+            {{glsl::TEXTURE_COUNT_CONSTANT_ID, scene.textureCount()}, {glsl::ALPHA_TESTED_CONSTANT_ID, VK_TRUE}});
         alphaPipeline = createGraphicsPipeline(context, desc, {scene.textureSetLayout});
     }
 }
@@ -95,12 +98,12 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
     auto drawRanges = [&](const Pipeline& drawing, bool alphaTested) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing.pipeline);
         DescriptorPush()
-            .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-            .buffer(1, scene.vertices.buffer)
-            .buffer(2, scene.materials.buffer)
+            .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            .buffer(glsl::VERTICES_BINDING, scene.vertices.buffer)
+            .buffer(glsl::MATERIALS_BINDING, scene.materials.buffer)
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing);
-        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing.layout, 1, 1, &scene.textureSet, 0,
-                                nullptr);
+        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, drawing.layout, glsl::TEXTURES_SET, 1,
+                                &scene.textureSet, 0, nullptr);
         for (const SceneGpu::MaterialRange& range : scene.materialRanges) {
             if (range.alphaTested != alphaTested) continue;
             vkCmdPushConstants(commands, drawing.layout, VK_SHADER_STAGE_ALL, 0, sizeof(uint32_t), &range.material);

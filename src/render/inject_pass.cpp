@@ -2,14 +2,17 @@
 
 #include <algorithm>
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "surface_planes.h"
 
 namespace vct {
 
 InjectPass::InjectPass(GpuContext& context)
-    : pipeline(createComputePipeline(context, "inject.comp", {}, {0u})),
-      cachedAreaPipeline(createComputePipeline(context, "inject.comp", {}, {1u})),
+    : pipeline(createComputePipeline(context, "inject.comp", {},
+                                     specializationConstants({{glsl::AREA_LIGHTS_CACHED_CONSTANT_ID, 0u}}))),
+      cachedAreaPipeline(createComputePipeline(context, "inject.comp", {},
+                                               specializationConstants({{glsl::AREA_LIGHTS_CACHED_CONSTANT_ID, 1u}}))),
       gatherPipeline(context, "bounce_gather.comp"),
       context_(context) {
     forgetAreaLights(0);
@@ -35,21 +38,21 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
     // Without a bounce target (one bounce) nothing is added: the radiance volume stands in.
     const VkImageView gathered = addGathered ? volumes.gatheredLight.view : volumes.lightLevelZeroViews()[0];
     DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .buffer(1, lights.lights)
-        .buffer(2, lights.shadowViews)
-        .sampledImage(3, shadows.sunMaps.view, shadows.compareSampler.sampler)
-        .sampledImage(4, shadows.localMaps.view, shadows.compareSampler.sampler)
-        .storageImage(5, volumes.albedoOpacity.view)
-        .storageImage(6, volumes.normal.view)
-        .buffer(7, lights.emitterTriangles)
-        .storageImage(8, volumes.lightLevelZeroViews()[0])
-        .storageImage(9, gathered)
-        .buffer(10, volumes.occupiedVoxels.buffer)
-        .buffer(11, volumes.occupiedDispatch.buffer)
-        .storageImage(12, volumes.emission.view)
-        .sampledImage(13, shadows.areaMaps.view, shadows.compareSampler.sampler)
-        .buffer(14, areaLightCache_.buffer)
+        .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .buffer(glsl::LIGHTS_BINDING, lights.lights)
+        .buffer(glsl::SHADOW_VIEWS_BINDING, lights.shadowViews)
+        .sampledImage(glsl::SUN_SHADOW_MAPS_BINDING, shadows.sunMaps.view, shadows.compareSampler.sampler)
+        .sampledImage(glsl::LOCAL_SHADOW_MAPS_BINDING, shadows.localMaps.view, shadows.compareSampler.sampler)
+        .storageImage(glsl::VOXEL_ALBEDO_BINDING, volumes.albedoOpacity.view)
+        .storageImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view)
+        .buffer(glsl::EMITTER_TRIANGLES_BINDING, lights.emitterTriangles)
+        .storageImage(glsl::VOXEL_RADIANCE_BINDING, volumes.lightLevelZeroViews()[0])
+        .storageImage(glsl::GATHERED_LIGHT_BINDING, gathered)
+        .buffer(glsl::OCCUPIED_VOXELS_BINDING, volumes.occupiedVoxels.buffer)
+        .buffer(glsl::OCCUPIED_LIST_BINDING, volumes.occupiedDispatch.buffer)
+        .storageImage(glsl::VOXEL_EMISSION_BINDING, volumes.emission.view)
+        .sampledImage(glsl::AREA_SHADOW_MAPS_BINDING, shadows.areaMaps.view, shadows.compareSampler.sampler)
+        .buffer(glsl::AREA_LIGHT_CACHE_BINDING, areaLightCache_.buffer)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, chosen);
     const uint32_t add = addGathered ? 1u : 0u;
     vkCmdPushConstants(commands, chosen.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);
@@ -73,15 +76,15 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather.pipeline);
     const VkSampler sampler = volumes.sampler.sampler;
     DescriptorPush()
-        .buffer(0, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-        .storageImage(1, volumes.albedoOpacity.view)
-        .storageImage(2, volumes.normal.view)
-        .storageImage(3, volumes.gatheredLight.view)
-        .sampledImage(9, volumes.radiance.view, sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        .storageImage(glsl::VOXEL_ALBEDO_BINDING, volumes.albedoOpacity.view)
+        .storageImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view)
+        .storageImage(glsl::GATHERED_LIGHT_BINDING, volumes.gatheredLight.view)
+        .sampledImage(glsl::VOXEL_RADIANCE_BINDING, volumes.radiance.view, sampler, VK_IMAGE_LAYOUT_GENERAL)
         .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), sampler, VK_IMAGE_LAYOUT_GENERAL)
-        .buffer(10, volumes.occupiedVoxels.buffer)
-        .buffer(11, volumes.occupiedDispatch.buffer)
-        .sampledImages(12, volumes.directionalViews(), sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .buffer(glsl::OCCUPIED_VOXELS_BINDING, volumes.occupiedVoxels.buffer)
+        .buffer(glsl::OCCUPIED_LIST_BINDING, volumes.occupiedDispatch.buffer)
+        .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes.directionalViews(), sampler, VK_IMAGE_LAYOUT_GENERAL)
         .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather);
     vkCmdPushConstants(commands, gather.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);

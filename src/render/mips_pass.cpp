@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "work_list.h"
 
@@ -9,8 +10,12 @@ namespace vct {
 
 MipsPass::MipsPass(GpuContext& context)
     : pipeline(createComputePipeline(context, "mips.comp")),
-      directionalFromScenePipeline(createComputePipeline(context, "mips_anisotropic.comp", {}, {1u})),
-      directionalPipeline(createComputePipeline(context, "mips_anisotropic.comp", {}, {0u})),
+      directionalFromScenePipeline(
+          createComputePipeline(context, "mips_anisotropic.comp", {},
+                                specializationConstants({{glsl::FINER_IS_SCENE_LEVEL_CONSTANT_ID, 1u}}))),
+      directionalPipeline(
+          createComputePipeline(context, "mips_anisotropic.comp", {},
+                                specializationConstants({{glsl::FINER_IS_SCENE_LEVEL_CONSTANT_ID, 0u}}))),
       surfacePlanesPipeline(createComputePipeline(context, "surface_planes.comp")),
       context_(context) {}
 
@@ -30,9 +35,9 @@ void MipsPass::recordSurfacePlanes(VkCommandBuffer commands, const VoxelVolumes&
     // Radiance level 0 is read as the injection left it (the chains' passes before ended on a barrier).
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline.pipeline);
     DescriptorPush()
-        .storageImage(0, mipView(volumes.radiance, 0))
-        .storageImage(1, volumes.normal.view)
-        .storageImage(2, mipView(planes, 0))
+        .storageImage(glsl::VOXEL_RADIANCE_BINDING, mipView(volumes.radiance, 0))
+        .storageImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view)
+        .storageImage(glsl::SURFACE_PLANES_BINDING, mipView(planes, 0))
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline);
     const uint32_t groups = (planes.desc.extent.width + 3) / 4;
     vkCmdDispatch(commands, groups, groups, groups);
@@ -58,11 +63,11 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
             // The first level takes its surfaces from the scene's normals; its finer flags are
             // bound but not read.
             DescriptorPush()
-                .storageImage(0, level == 0 ? mipView(volume, 0) : mipView(chains, level - 1))
-                .storageImage(1, mipView(chains, level))
-                .storageImage(2, volumes.normal.view)
-                .storageImage(3, mipView(leaving, level == 0 ? 0 : level - 1))
-                .storageImage(4, mipView(leaving, level))
+                .storageImage(glsl::FINER_LEVEL_BINDING, level == 0 ? mipView(volume, 0) : mipView(chains, level - 1))
+                .storageImage(glsl::COARSER_LEVEL_BINDING, mipView(chains, level))
+                .storageImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view)
+                .storageImage(glsl::FINER_LEAVING_BINDING, mipView(leaving, level == 0 ? 0 : level - 1))
+                .storageImage(glsl::COARSER_LEAVING_BINDING, mipView(leaving, level))
                 .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline);
             const uint32_t push[2] = {axis, rayVisibility ? 1u : 0u};  // mips_anisotropic.comp's Push
             vkCmdPushConstants(commands, levelPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), push);
@@ -80,8 +85,8 @@ void MipsPass::recordIsotropic(VkCommandBuffer commands, const GpuImage& volume)
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     for (uint32_t level = 1; level < volume.desc.mipLevels; ++level) {
         DescriptorPush()
-            .storageImage(0, mipView(volume, level - 1))
-            .storageImage(1, mipView(volume, level))
+            .storageImage(glsl::FINER_LEVEL_BINDING, mipView(volume, level - 1))
+            .storageImage(glsl::COARSER_LEVEL_BINDING, mipView(volume, level))
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
         const uint32_t size = std::max(volume.desc.extent.width >> level, 1u);
         const uint32_t groups = (size + 3) / 4;

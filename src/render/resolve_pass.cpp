@@ -1,5 +1,6 @@
 #include "render/resolve_pass.h"
 
+#include "bindings.h"
 #include "gpu/commands.h"
 
 namespace vct {
@@ -26,8 +27,8 @@ void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled,
                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | (keeps ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT : 0));
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     DescriptorPush()
-        .sampledImage(0, supersampled.view, pointSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
-        .storageImage(1, resolved.view)
+        .sampledImage(glsl::SUPERSAMPLED_BINDING, supersampled.view, pointSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .storageImage(glsl::RESOLVED_BINDING, resolved.view)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     const struct {
         uint32_t factor;

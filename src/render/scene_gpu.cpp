@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "alpha_coverage.h"
+#include "bindings.h"
 #include "error.h"
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
@@ -199,8 +200,9 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
 
     // The texture array changes size with the scene, so it lives in a classic descriptor set.
     // The G-buffer reads it per pixel, the voxelizer per voxel.
-    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount(),
-                                         VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    VkDescriptorSetLayoutBinding binding{glsl::COLOR_TEXTURES_BINDING, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                         textureCount(), VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
+                                         nullptr};
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = 1;
     layoutInfo.pBindings = &binding;
@@ -243,6 +245,7 @@ SceneGpu::SceneGpu(GpuContext& context, const Scene& scene) : context_(context) 
     for (int i = 0; i < 2; ++i) {
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = sets[i];
+        writes[i].dstBinding = glsl::COLOR_TEXTURES_BINDING;
         writes[i].descriptorCount = textureCount();
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         writes[i].pImageInfo = i == 0 ? imageInfos.data() : voxelImageInfos.data();

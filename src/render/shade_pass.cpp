@@ -1,5 +1,6 @@
 #include "render/shade_pass.h"
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "render/cone_tracing_pipeline.h"
 #include "render/ltc_table.h"
@@ -29,9 +30,15 @@ const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
     desc.fragmentShader = "shade.frag";
     desc.colorFormats = {radiance.desc.format};
     desc.fragmentSpecialization = coneTracingSpecialization(
-        variant.skipsEmptySpace,
-        {variant.debugViews, variant.tracesDiffuseCones, variant.tracesSpecularCone, variant.areaLights,
-         variant.sunShadows, variant.localShadows, variant.areaLightSpecular});
+        variant.skipsEmptySpace, specializationConstants({
+                                     {glsl::WITH_DEBUG_VIEWS_CONSTANT_ID, variant.debugViews},
+                                     {glsl::TRACES_DIFFUSE_CONES_CONSTANT_ID, variant.tracesDiffuseCones},
+                                     {glsl::TRACES_SPECULAR_CONE_CONSTANT_ID, variant.tracesSpecularCone},
+                                     {glsl::WITH_AREA_LIGHTS_CONSTANT_ID, variant.areaLights},
+                                     {glsl::WITH_SUN_SHADOWS_CONSTANT_ID, variant.sunShadows},
+                                     {glsl::WITH_LOCAL_SHADOWS_CONSTANT_ID, variant.localShadows},
+                                     {glsl::WITH_AREA_LIGHT_SPECULAR_CONSTANT_ID, variant.areaLightSpecular},
+                                 }));
     slot = createGraphicsPipeline(context_, desc);
     return slot;
 }
@@ -49,29 +56,31 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
         // Without reduced diffuse cones the shader never samples binding 13: the base colour stands in.
         const VkImageView reducedDiffuse = inputs.reducedDiffuse ? inputs.reducedDiffuse : gbuffer.baseColor.view;
         DescriptorPush()
-            .sampledImages(12, volumes.directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .buffer(0, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-            .buffer(1, inputs.materials)
-            .buffer(2, inputs.lights.lights)
-            .buffer(3, inputs.lights.shadowViews)
-            .buffer(17, inputs.lights.emitterTriangles)
-            .buffer(20, ltcTable.buffer)
-            .sampledImage(4, shadows.sunMaps.view, shadows.compareSampler.sampler)
-            .sampledImage(5, shadows.localMaps.view, shadows.compareSampler.sampler)
-            .sampledImage(6, gbuffer.position.view, pointSampler.sampler)
-            .sampledImage(7, gbuffer.normal.view, pointSampler.sampler)
-            .sampledImage(8, gbuffer.baseColor.view, pointSampler.sampler)
-            .sampledImage(9, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImage(10, volumes.albedoOpacity.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImage(11, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes.directionalViews(), volumeSampler,
+                           VK_IMAGE_LAYOUT_GENERAL)
+            .buffer(glsl::FRAME_BINDING, inputs.frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            .buffer(glsl::MATERIALS_BINDING, inputs.materials)
+            .buffer(glsl::LIGHTS_BINDING, inputs.lights.lights)
+            .buffer(glsl::SHADOW_VIEWS_BINDING, inputs.lights.shadowViews)
+            .buffer(glsl::EMITTER_TRIANGLES_BINDING, inputs.lights.emitterTriangles)
+            .buffer(glsl::LTC_TABLE_BINDING, ltcTable.buffer)
+            .sampledImage(glsl::SUN_SHADOW_MAPS_BINDING, shadows.sunMaps.view, shadows.compareSampler.sampler)
+            .sampledImage(glsl::LOCAL_SHADOW_MAPS_BINDING, shadows.localMaps.view, shadows.compareSampler.sampler)
+            .sampledImage(glsl::G_POSITION_BINDING, gbuffer.position.view, pointSampler.sampler)
+            .sampledImage(glsl::G_NORMAL_BINDING, gbuffer.normal.view, pointSampler.sampler)
+            .sampledImage(glsl::G_BASE_COLOR_BINDING, gbuffer.baseColor.view, pointSampler.sampler)
+            .sampledImage(glsl::VOXEL_RADIANCE_BINDING, volumes.radiance.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(glsl::VOXEL_ALBEDO_BINDING, volumes.albedoOpacity.view, volumeSampler,
+                          VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), volumeSampler,
                           VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImage(13, reducedDiffuse, pointSampler.sampler)
-            .sampledImage(14, shadows.sunMaps.view, pointSampler.sampler)
-            .sampledImage(15, shadows.localMaps.view, pointSampler.sampler)
-            .sampledImage(16, gbuffer.emissive.view, pointSampler.sampler)
-            .sampledImage(18, shadows.areaMaps.view, shadows.compareSampler.sampler)
-            .sampledImage(19, shadows.areaMaps.view, pointSampler.sampler)
+            .sampledImage(glsl::DIFFUSE_SAMPLES_BINDING, reducedDiffuse, pointSampler.sampler)
+            .sampledImage(glsl::SUN_SHADOW_DEPTHS_BINDING, shadows.sunMaps.view, pointSampler.sampler)
+            .sampledImage(glsl::LOCAL_SHADOW_DEPTHS_BINDING, shadows.localMaps.view, pointSampler.sampler)
+            .sampledImage(glsl::G_EMISSIVE_BINDING, gbuffer.emissive.view, pointSampler.sampler)
+            .sampledImage(glsl::AREA_SHADOW_MAPS_BINDING, shadows.areaMaps.view, shadows.compareSampler.sampler)
+            .sampledImage(glsl::AREA_SHADOW_DEPTHS_BINDING, shadows.areaMaps.view, pointSampler.sampler)
             .sampledImage(glsl::SKY_BINDING, inputs.sky->view(), inputs.sky->sampler())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant);
     });

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "lights.h"
 #include "render/camera.h"
@@ -145,7 +146,8 @@ void ShadowPass::useScene(const SceneGpu& scene) {
     desc.fragmentShader = "shadow_alpha.frag";
     desc.depthFormat = kShadowFormat;
     desc.depthTest = true;
-    desc.fragmentSpecialization = {scene.textureCount()};  // the texture array's size, as in the G-buffer
+    // The texture array's size, as in the G-buffer.
+    desc.fragmentSpecialization = specializationConstants({{glsl::TEXTURE_COUNT_CONSTANT_ID, scene.textureCount()}});
     alphaPipeline = createGraphicsPipeline(context_, desc, {scene.textureSetLayout});
 }
 
@@ -190,8 +192,8 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     auto bindOpaque = [&] {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
         DescriptorPush()
-            .buffer(0, scene.vertices.buffer)
-            .buffer(1, viewsBuffer)
+            .buffer(glsl::VERTICES_BINDING, scene.vertices.buffer)
+            .buffer(glsl::SHADOW_VIEWS_BINDING, viewsBuffer)
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     };
     bindOpaque();
@@ -226,12 +228,12 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
             if (alphaTested) {
                 vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.pipeline);
                 DescriptorPush()
-                    .buffer(0, scene.vertices.buffer)
-                    .buffer(1, viewsBuffer)
-                    .buffer(2, scene.materials.buffer)
+                    .buffer(glsl::VERTICES_BINDING, scene.vertices.buffer)
+                    .buffer(glsl::SHADOW_VIEWS_BINDING, viewsBuffer)
+                    .buffer(glsl::MATERIALS_BINDING, scene.materials.buffer)
                     .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline);
-                vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.layout, 1, 1,
-                                        &scene.textureSet, 0, nullptr);
+                vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, alphaPipeline.layout,
+                                        glsl::TEXTURES_SET, 1, &scene.textureSet, 0, nullptr);
                 opaqueBound = false;
                 for (const SceneGpu::MaterialRange& range : scene.alphaTestedRanges) {
                     const uint32_t viewAndMaterial[2] = {index, range.material};

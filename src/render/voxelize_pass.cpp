@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "bindings.h"
 #include "error.h"
 #include "gpu/commands.h"
 #include "render/renderer_limits.h"
@@ -241,8 +242,10 @@ VoxelizePass::VoxelizePass(GpuContext& context, const Scene& scene, const SceneG
         accumulation[channel] = Buffer(context, keepsChannel(channel, channels) ? cube(resolution) * 4 : 4,
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     }
-    voxelizePipeline = createComputePipeline(context, "voxelize.comp", {sceneGpu.textureSetLayout},
-                                             {sceneGpu.textureCount(), hasMaskTextures(scene) ? 1u : 0u});
+    voxelizePipeline = createComputePipeline(
+        context, "voxelize.comp", {sceneGpu.textureSetLayout},
+        specializationConstants({{glsl::TEXTURE_COUNT_CONSTANT_ID, sceneGpu.textureCount()},
+                                 {glsl::MASK_TEXTURES_CONSTANT_ID, hasMaskTextures(scene) ? 1u : 0u}}));
     resolvePipeline = createComputePipeline(context, "voxel_resolve.comp");
 }
 
@@ -277,17 +280,17 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
 
     if (!workChunks.empty()) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
-        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout, 1, 1,
-                                &sceneGpu.voxelTextureSet, 0, nullptr);
+        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout, glsl::TEXTURES_SET,
+                                1, &sceneGpu.voxelTextureSet, 0, nullptr);
     }
     for (const WorkChunk& chunk : workChunks) {
         DescriptorPush()
-            .buffer(0, sceneGpu.vertices.buffer)
-            .buffer(1, sceneGpu.indices.buffer)
-            .buffer(2, sceneGpu.triangleMaterials.buffer)
-            .buffer(3, sceneGpu.materials.buffer)
-            .buffer(4, chunk.items.buffer)
-            .buffers(5, accumulationBuffers())
+            .buffer(glsl::VERTICES_BINDING, sceneGpu.vertices.buffer)
+            .buffer(glsl::INDICES_BINDING, sceneGpu.indices.buffer)
+            .buffer(glsl::TRIANGLE_MATERIALS_BINDING, sceneGpu.triangleMaterials.buffer)
+            .buffer(glsl::MATERIALS_BINDING, sceneGpu.materials.buffer)
+            .buffer(glsl::VOXELIZER_WORK_ITEMS_BINDING, chunk.items.buffer)
+            .buffers(glsl::VOXEL_ACCUMULATION_BINDING, accumulationBuffers())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline);
         glsl::VoxelizeParams chunkParams = params;
         chunkParams.grid.workItems = chunk.count;
@@ -303,13 +306,13 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
 
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.pipeline);
     DescriptorPush()
-        .buffers(0, accumulationBuffers())
-        .storageImage(1, volumes.albedoOpacity.view)
-        .storageImage(2, volumes.normal.view)
-        .storageImage(3, volumes.emission.view)
-        .buffer(4, volumes.occupiedVoxels.buffer)
-        .buffer(5, volumes.occupiedDispatch.buffer)
-        .storageImages(6, volumes.lightLevelZeroViews())
+        .buffers(glsl::VOXEL_ACCUMULATION_BINDING, accumulationBuffers())
+        .storageImage(glsl::VOXEL_ALBEDO_BINDING, volumes.albedoOpacity.view)
+        .storageImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view)
+        .storageImage(glsl::VOXEL_EMISSION_BINDING, volumes.emission.view)
+        .buffer(glsl::OCCUPIED_VOXELS_BINDING, volumes.occupiedVoxels.buffer)
+        .buffer(glsl::OCCUPIED_LIST_BINDING, volumes.occupiedDispatch.buffer)
+        .storageImages(glsl::LIGHT_VOLUMES_BINDING, volumes.lightLevelZeroViews())
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline);
     vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
     const uint32_t groups = resolution / 4;

@@ -1,5 +1,6 @@
 #include "view/present_pass.h"
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 
@@ -166,7 +167,7 @@ void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2
     vkCmdSetScissor(commands, 0, 1, &scissor);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_.pipeline);
     DescriptorPush()
-        .sampledImage(0, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(glsl::DISPLAYED_BINDING, radiance.view, sampler_.sampler, VK_IMAGE_LAYOUT_GENERAL)
         .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_);
     const glsl::TonemapPush push{glm::vec2(float(area.offset.x), float(area.offset.y)),
                                  glm::vec2(1.0f / float(area.extent.width), 1.0f / float(area.extent.height)),

@@ -1,5 +1,6 @@
 // SPIR-V reflection (src/gpu/spirv_reflect): the committed shaders in spirv/ give the bindings their GLSL
 // declares, small modules compiled offline cover each descriptor kind, and malformed words are errors.
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <fstream>
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bindings.h"
 #include "equirectangular.h"
 #include "error.h"
 #include "gpu/spirv_reflect.h"
@@ -178,8 +180,12 @@ ReflectedBinding binding(uint32_t set, uint32_t number, VkDescriptorType type, V
     return b;
 }
 
-// Compares set, binding, type, count and stages, and prints the binding that differs.
-void expectBindings(const std::vector<ReflectedBinding>& actual, const std::vector<ReflectedBinding>& expected) {
+// Compares set, binding, type, count and stages, and prints the binding that differs. `expected`
+// in any order: the reflection lists them by set and binding.
+void expectBindings(const std::vector<ReflectedBinding>& actual, std::vector<ReflectedBinding> expected) {
+    std::sort(expected.begin(), expected.end(), [](const ReflectedBinding& a, const ReflectedBinding& b) {
+        return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);
+    });
     ASSERT_EQ(actual.size(), expected.size());
     for (size_t i = 0; i < expected.size(); ++i) {
         SCOPED_TRACE("binding " + std::to_string(expected[i].binding) + " of set " + std::to_string(expected[i].set));
@@ -210,18 +216,24 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
     // keeps per voxel; one invocation per listed voxel, 64 to a workgroup.
     const ShaderReflection inject = reflectFile("inject.comp");
     EXPECT_EQ(inject.stage, kCompute);
-    std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute),
-                                              binding(0, 1, kStorageBuffer, kCompute),
-                                              binding(0, 2, kStorageBuffer, kCompute),
-                                              binding(0, 3, kCombined, kCompute), binding(0, 4, kCombined, kCompute)};
-    for (uint32_t b = 5; b <= 9; ++b)
-        expected.push_back(binding(0, b, b == 7 ? kStorageBuffer : kStorageImage, kCompute));
-    expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
-    expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
-    expected.push_back(binding(0, 12, kStorageImage, kCompute));
-    expected.push_back(binding(0, 13, kCombined, kCompute));       // the area lights' shadow maps
-    expected.push_back(binding(0, 14, kStorageBuffer, kCompute));  // the area lights' light, kept
-    expectBindings(inject.bindings, expected);
+    auto in = [](uint32_t number, VkDescriptorType type) { return binding(0, number, type, kCompute); };
+    expectBindings(inject.bindings, {
+                                        in(glsl::FRAME_BINDING, kUniformBuffer),
+                                        in(glsl::LIGHTS_BINDING, kStorageBuffer),
+                                        in(glsl::SHADOW_VIEWS_BINDING, kStorageBuffer),
+                                        in(glsl::SUN_SHADOW_MAPS_BINDING, kCombined),
+                                        in(glsl::LOCAL_SHADOW_MAPS_BINDING, kCombined),
+                                        in(glsl::VOXEL_ALBEDO_BINDING, kStorageImage),
+                                        in(glsl::VOXEL_NORMAL_BINDING, kStorageImage),
+                                        in(glsl::EMITTER_TRIANGLES_BINDING, kStorageBuffer),
+                                        in(glsl::VOXEL_RADIANCE_BINDING, kStorageImage),
+                                        in(glsl::GATHERED_LIGHT_BINDING, kStorageImage),
+                                        in(glsl::OCCUPIED_VOXELS_BINDING, kStorageBuffer),
+                                        in(glsl::OCCUPIED_LIST_BINDING, kStorageBuffer),
+                                        in(glsl::VOXEL_EMISSION_BINDING, kStorageImage),
+                                        in(glsl::AREA_SHADOW_MAPS_BINDING, kCombined),
+                                        in(glsl::AREA_LIGHT_CACHE_BINDING, kStorageBuffer),
+                                    });
     EXPECT_EQ(inject.pushConstantBytes, 4u);  // uint addGathered
     EXPECT_EQ(inject.localSize[0], 64u);
     EXPECT_EQ(inject.localSize[1], 1u);
@@ -230,41 +242,60 @@ TEST(SpirvReflect, InjectComputeShaderHasTheBindingsItsGlslDeclares) {
 
 TEST(SpirvReflect, BounceGatherComputeShaderHasTheBindingsItsGlslDeclares) {
     // bounce_gather.comp.glsl: frame, albedo and normal, the gathered light it writes, the radiance
-    // volume, the occupied-voxel list and its count, directional_voxels.glsl's three images at 12, the
+    // volume, the occupied-voxel list and its count, directional_voxels.glsl's three images, the
     // surface planes and the sky's image.
     const ShaderReflection gather = reflectFile("bounce_gather.comp");
     EXPECT_EQ(gather.stage, kCompute);
-    std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kCompute)};
-    for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageImage, kCompute));
-    expected.push_back(binding(0, 9, kCombined, kCompute));
-    expected.push_back(binding(0, 10, kStorageBuffer, kCompute));
-    expected.push_back(binding(0, 11, kStorageBuffer, kCompute));
-    expected.push_back(binding(0, 12, kCombined, kCompute, 3));
-    expected.push_back(binding(0, glsl::SURFACE_PLANES_BINDING, kCombined, kCompute));  // surface_planes.glsl
-    expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kCompute));             // sky.glsl's environment image
-    expectBindings(gather.bindings, expected);
+    auto in = [](uint32_t number, VkDescriptorType type, uint32_t count = 1) {
+        return binding(0, number, type, kCompute, count);
+    };
+    expectBindings(gather.bindings, {
+                                        in(glsl::FRAME_BINDING, kUniformBuffer),
+                                        in(glsl::VOXEL_ALBEDO_BINDING, kStorageImage),
+                                        in(glsl::VOXEL_NORMAL_BINDING, kStorageImage),
+                                        in(glsl::GATHERED_LIGHT_BINDING, kStorageImage),
+                                        in(glsl::VOXEL_RADIANCE_BINDING, kCombined),
+                                        in(glsl::OCCUPIED_VOXELS_BINDING, kStorageBuffer),
+                                        in(glsl::OCCUPIED_LIST_BINDING, kStorageBuffer),
+                                        in(glsl::DIRECTIONAL_VOXELS_BINDING, kCombined, 3),
+                                        in(glsl::SURFACE_PLANES_BINDING, kCombined),
+                                        in(glsl::SKY_BINDING, kCombined),
+                                    });
     EXPECT_EQ(gather.pushConstantBytes, 8u);  // uint sliceCount, slicePhase
     EXPECT_EQ(gather.localSize[0], 64u);
 }
 
-TEST(SpirvReflect, ShadeFragmentShaderReadsBuffersThenSampledImages) {
+TEST(SpirvReflect, ShadeFragmentShaderHasTheBindingsItsGlslDeclares) {
     const ShaderReflection shade = reflectFile("shade.frag");
     EXPECT_EQ(shade.stage, kFragment);
-    std::vector<ReflectedBinding> expected = {binding(0, 0, kUniformBuffer, kFragment)};
-    for (uint32_t b = 1; b <= 3; ++b) expected.push_back(binding(0, b, kStorageBuffer, kFragment));
-    for (uint32_t b = 4; b <= 11; ++b) expected.push_back(binding(0, b, kCombined, kFragment));
-    expected.push_back(binding(0, 12, kCombined, kFragment, 3));    // the directional volumes, an image per axis
-    expected.push_back(binding(0, 13, kCombined, kFragment));       // the reduced diffuse cones
-    expected.push_back(binding(0, 14, kCombined, kFragment));       // the sun shadow maps' depths
-    expected.push_back(binding(0, 15, kCombined, kFragment));       // the local shadow maps' depths
-    expected.push_back(binding(0, 16, kCombined, kFragment));       // the G-buffer's emissive texture colour
-    expected.push_back(binding(0, 17, kStorageBuffer, kFragment));  // the area lights' triangles
-    expected.push_back(binding(0, 18, kCombined, kFragment));       // their shadow maps
-    expected.push_back(binding(0, 19, kCombined, kFragment));       // ... and their depths
-    expected.push_back(binding(0, 20, kStorageBuffer, kFragment));  // their GGX table (ltc.h)
-    expected.push_back(binding(0, glsl::SURFACE_PLANES_BINDING, kCombined, kFragment));  // ray visibility's planes
-    expected.push_back(binding(0, glsl::SKY_BINDING, kCombined, kFragment));             // the environment image
-    expectBindings(shade.bindings, expected);
+    auto in = [](uint32_t number, VkDescriptorType type, uint32_t count = 1) {
+        return binding(0, number, type, kFragment, count);
+    };
+    expectBindings(shade.bindings, {
+                                       in(glsl::FRAME_BINDING, kUniformBuffer),
+                                       in(glsl::MATERIALS_BINDING, kStorageBuffer),
+                                       in(glsl::LIGHTS_BINDING, kStorageBuffer),
+                                       in(glsl::SHADOW_VIEWS_BINDING, kStorageBuffer),
+                                       in(glsl::EMITTER_TRIANGLES_BINDING, kStorageBuffer),  // the area lights'
+                                       in(glsl::LTC_TABLE_BINDING, kStorageBuffer),          // their GGX table
+                                       in(glsl::SUN_SHADOW_MAPS_BINDING, kCombined),
+                                       in(glsl::LOCAL_SHADOW_MAPS_BINDING, kCombined),
+                                       in(glsl::AREA_SHADOW_MAPS_BINDING, kCombined),
+                                       in(glsl::SUN_SHADOW_DEPTHS_BINDING, kCombined),
+                                       in(glsl::LOCAL_SHADOW_DEPTHS_BINDING, kCombined),
+                                       in(glsl::AREA_SHADOW_DEPTHS_BINDING, kCombined),
+                                       in(glsl::G_POSITION_BINDING, kCombined),
+                                       in(glsl::G_NORMAL_BINDING, kCombined),
+                                       in(glsl::G_BASE_COLOR_BINDING, kCombined),
+                                       in(glsl::G_EMISSIVE_BINDING, kCombined),
+                                       in(glsl::VOXEL_RADIANCE_BINDING, kCombined),
+                                       in(glsl::VOXEL_ALBEDO_BINDING, kCombined),
+                                       in(glsl::VOXEL_NORMAL_BINDING, kCombined),
+                                       in(glsl::DIRECTIONAL_VOXELS_BINDING, kCombined, 3),
+                                       in(glsl::SURFACE_PLANES_BINDING, kCombined),
+                                       in(glsl::DIFFUSE_SAMPLES_BINDING, kCombined),  // the reduced diffuse cones
+                                       in(glsl::SKY_BINDING, kCombined),
+                                   });
     EXPECT_EQ(shade.pushConstantBytes, 0u);
 }
 
@@ -378,7 +409,8 @@ TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
 TEST(SpirvReflect, VertexShadersAreVertexStage) {
     const ShaderReflection gbuffer = reflectFile("gbuffer.vert");
     EXPECT_EQ(gbuffer.stage, kVertex);
-    expectBindings(gbuffer.bindings, {binding(0, 0, kUniformBuffer, kVertex), binding(0, 1, kStorageBuffer, kVertex)});
+    expectBindings(gbuffer.bindings, {binding(0, glsl::FRAME_BINDING, kUniformBuffer, kVertex),
+                                      binding(0, glsl::VERTICES_BINDING, kStorageBuffer, kVertex)});
     const ShaderReflection fullscreen = reflectFile("fullscreen.vert");
     EXPECT_EQ(fullscreen.stage, kVertex);
     EXPECT_TRUE(fullscreen.bindings.empty());
@@ -406,27 +438,30 @@ TEST(SpirvReflect, LocalSizeComesFromTheComputeShader) {
 }
 
 TEST(SpirvReflect, ArrayOfStorageBuffersIsOneBindingOfThatCount) {
-    // voxel_resolve.comp: buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS] at binding 0.
+    // voxel_resolve.comp: buffer Accumulation { uint values[]; } accumulation[ACCUM_CHANNELS].
     const ShaderReflection resolve = reflectFile("voxel_resolve.comp");
-    ASSERT_FALSE(resolve.bindings.empty());
-    EXPECT_EQ(resolve.bindings[0].binding, 0u);
-    EXPECT_EQ(resolve.bindings[0].type, kStorageBuffer);
-    EXPECT_EQ(resolve.bindings[0].count, glsl::ACCUM_CHANNELS);
-    EXPECT_FALSE(resolve.bindings[0].countSpecId.has_value());
+    const auto accumulation =
+        std::find_if(resolve.bindings.begin(), resolve.bindings.end(),
+                     [](const ReflectedBinding& b) { return b.binding == glsl::VOXEL_ACCUMULATION_BINDING; });
+    ASSERT_NE(accumulation, resolve.bindings.end());
+    EXPECT_EQ(accumulation->type, kStorageBuffer);
+    EXPECT_EQ(accumulation->count, glsl::ACCUM_CHANNELS);
+    EXPECT_FALSE(accumulation->countSpecId.has_value());
 }
 
 TEST(SpirvReflect, ArraySizedBySpecializationConstantSaysWhichOne) {
-    // gbuffer.frag: layout(constant_id = 0) const uint TEXTURE_COUNT = 1; sampler2D baseColorTextures[TEXTURE_COUNT]
-    // at set 1 binding 0. The layout must use the specialized count, so the reflection names the constant.
+    // gbuffer.frag: layout(constant_id = TEXTURE_COUNT_CONSTANT_ID) const uint TEXTURE_COUNT = 1; sampler2D
+    // colorTextures[TEXTURE_COUNT] in set 1. The layout must use the specialized count, so the reflection names
+    // the constant.
     const ShaderReflection gbuffer = reflectFile("gbuffer.frag");
     ASSERT_EQ(gbuffer.bindings.size(), 3u);
     const ReflectedBinding& textures = gbuffer.bindings[2];
-    EXPECT_EQ(textures.set, 1u);
-    EXPECT_EQ(textures.binding, 0u);
+    EXPECT_EQ(textures.set, glsl::TEXTURES_SET);
+    EXPECT_EQ(textures.binding, glsl::COLOR_TEXTURES_BINDING);
     EXPECT_EQ(textures.type, kCombined);
     EXPECT_EQ(textures.count, 1u);  // the constant's default
     ASSERT_TRUE(textures.countSpecId.has_value());
-    EXPECT_EQ(*textures.countSpecId, 0u);
+    EXPECT_EQ(*textures.countSpecId, glsl::TEXTURE_COUNT_CONSTANT_ID);
 }
 
 TEST(SpirvReflect, EveryDescriptorKindMapsToItsVulkanType) {
@@ -508,8 +543,10 @@ TEST(SpirvReflect, MergedStagesOrTheirStageFlags) {
         mergeStages({reflectFile("gbuffer.vert"), reflectFile("gbuffer.frag")}, "gbuffer pipeline");
     EXPECT_EQ(pipeline.stage, kVertex | kFragment);
     expectBindings(pipeline.bindings,
-                   {binding(0, 0, kUniformBuffer, kVertex | kFragment), binding(0, 1, kStorageBuffer, kVertex),
-                    binding(0, 2, kStorageBuffer, kFragment), binding(1, 0, kCombined, kFragment)});
+                   {binding(0, glsl::FRAME_BINDING, kUniformBuffer, kVertex | kFragment),
+                    binding(0, glsl::VERTICES_BINDING, kStorageBuffer, kVertex),
+                    binding(0, glsl::MATERIALS_BINDING, kStorageBuffer, kFragment),
+                    binding(glsl::TEXTURES_SET, glsl::COLOR_TEXTURES_BINDING, kCombined, kFragment)});
     EXPECT_EQ(pipeline.pushConstantBytes, 4u);
 
     // The lighting pass: a vertex shader without descriptors and shade.frag's.

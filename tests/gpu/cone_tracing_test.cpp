@@ -9,6 +9,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include "bindings.h"
 #include "gpu/commands.h"
 #include "gpu/pipelines.h"
 #include "gpu/readback.h"
@@ -121,11 +122,13 @@ protected:
         submitAndWait(context, [&](VkCommandBuffer commands) {
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
             DescriptorPush()
-                .sampledImages(12, volumes->directionalViews(), volumes->sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
-                .buffer(0, frame.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-                .sampledImage(1, volume().view, volumes->sampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
-                .buffer(2, probeBuffer.buffer)
-                .buffer(3, results.buffer)
+                .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes->directionalViews(), volumes->sampler.sampler,
+                               VK_IMAGE_LAYOUT_GENERAL)
+                .buffer(glsl::FRAME_BINDING, frame.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+                .sampledImage(glsl::VOXEL_RADIANCE_BINDING, volume().view, volumes->sampler.sampler,
+                              VK_IMAGE_LAYOUT_GENERAL)
+                .buffer(glsl::CONE_PROBES_BINDING, probeBuffer.buffer)
+                .buffer(glsl::CONE_PROBE_RESULTS_BINDING, results.buffer)
                 .sampledImage(glsl::SKY_BINDING, sky.view(), sky.sampler())
                 .push(context, commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
             vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(count), &count);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bindings.h"
 #include "error.h"
 #include "gpu/pipelines.h"
 #include "gpu/resources.h"
@@ -31,10 +32,11 @@ std::string storageBufferWriteError(const char* shader, uint32_t binding, size_t
 }
 
 TEST_F(DescriptorPushTest, AWriteOfTheWrongTypeNamesTheShaderAndTheBinding) {
-    // mips.comp.glsl: bindings 0 and 1 are storage images.
-    const std::string message = storageBufferWriteError("mips.comp", 1, 1);
+    // mips.comp.glsl: the finer and the coarser level are storage images.
+    const std::string message = storageBufferWriteError("mips.comp", glsl::COARSER_LEVEL_BINDING, 1);
     EXPECT_NE(message.find("mips.comp"), std::string::npos) << message;
-    EXPECT_NE(message.find("binding 1 is a storage image"), std::string::npos) << message;
+    const std::string binding = "binding " + std::to_string(glsl::COARSER_LEVEL_BINDING);
+    EXPECT_NE(message.find(binding + " is a storage image"), std::string::npos) << message;
     EXPECT_NE(message.find("written as a storage buffer"), std::string::npos) << message;
 }
 
@@ -45,9 +47,10 @@ TEST_F(DescriptorPushTest, AWriteToASlotTheShaderDoesNotDeclareIsAnError) {
 }
 
 TEST_F(DescriptorPushTest, MoreArrayElementsThanTheShaderDeclaresIsAnError) {
-    // diffuse_trace_list.comp.glsl: binding 2 is one storage buffer (the listed samples).
-    const std::string message = storageBufferWriteError("diffuse_trace_list.comp", 2, 2);
-    EXPECT_NE(message.find("binding 2 holds 1 descriptor(s), written with 2"), std::string::npos) << message;
+    // diffuse_trace_list.comp.glsl: the listed samples are one storage buffer.
+    const std::string message = storageBufferWriteError("diffuse_trace_list.comp", glsl::LISTED_SAMPLES_BINDING, 2);
+    const std::string binding = "binding " + std::to_string(glsl::LISTED_SAMPLES_BINDING);
+    EXPECT_NE(message.find(binding + " holds 1 descriptor(s), written with 2"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -27,16 +27,6 @@ RenderSettings reducedSettings() {
     return settings;
 }
 
-// The largest difference of any channel, relative to the image's mean.
-double largestDifference(const Image& image, const Image& reference) {
-    double largest = 0.0, sum = 0.0;
-    for (size_t i = 0; i < image.rgb.size(); ++i) {
-        largest = std::max(largest, double(std::abs(image.rgb[i] - reference.rgb[i])));
-        sum += reference.rgb[i];
-    }
-    return largest / (sum / double(reference.rgb.size()));
-}
-
 // The camera turned about the vertical axis through `pivot`.
 Camera orbited(Camera camera, glm::vec3 pivot, float degrees) {
     const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));

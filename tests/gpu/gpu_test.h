@@ -4,13 +4,28 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "gpu/context.h"
+#include "io/image_io.h"
 #include "render/presets.h"
 #include "render/settings.h"
 
 namespace vct::test {
 
 GpuContext& gpu();
+
+// The largest difference of any channel between two images of one size, relative to the
+// reference's mean.
+inline double largestDifference(const Image& image, const Image& reference) {
+    double largest = 0.0, sum = 0.0;
+    for (size_t i = 0; i < image.rgb.size(); ++i) {
+        largest = std::max(largest, double(std::abs(image.rgb[i] - reference.rgb[i])));
+        sum += reference.rgb[i];
+    }
+    return largest / (sum / double(reference.rgb.size()));
+}
 
 // What the small render tests start from: a square image of `size` pixels, one sample a pixel, a
 // 32³ grid, small shadow maps (256² for suns, 128² for the rest) and `mode`.

@@ -31,16 +31,6 @@ bool identical(const Image& a, const Image& b) {
     return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
 }
 
-// The largest difference of any channel, relative to the reference's mean.
-double largestDifference(const Image& image, const Image& reference) {
-    double largest = 0.0, sum = 0.0;
-    for (size_t i = 0; i < image.rgb.size(); ++i) {
-        largest = std::max(largest, double(std::abs(image.rgb[i] - reference.rgb[i])));
-        sum += reference.rgb[i];
-    }
-    return largest / (sum / double(reference.rgb.size()));
-}
-
 class TurnedCones : public GpuTest {
 protected:
     Scene scene = loadScene("cornell");
