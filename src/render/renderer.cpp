@@ -6,15 +6,13 @@
 #include <cstring>
 #include <functional>
 
-#include <glm/gtc/packing.hpp>
-
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
-#include "luminance.h"
 #include "render/camera.h"
 #include "render/frame_constants.h"
 #include "render/frame_plan.h"
 #include "render/renderer_limits.h"
+#include "render/scene_analysis.h"
 #include "render/voxel_grid_fit.h"
 
 namespace vct {
@@ -53,11 +51,10 @@ static const RenderSettings& checkedSettings(const GpuContext& context, const Sc
 Renderer::Renderer(GpuContext& context, const Scene& scene, const RenderSettings& settings)
     : context_(context),
       settings_(checkedSettings(context, scene, settings)),
-      sceneBounds_(scene.bounds()),
       camera_(scene.cameras.empty() ? defaultCamera(scene.bounds()) : scene.cameras.front()),
       lights_(scene.lights),
       frameConstants_(context, sizeof(glsl::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true),
-      meanRadiance_(context, 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
+      bounceConvergence_(context),
       occupiedHeader_(context, sizeof(glsl::WorkListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
       volumes_(std::make_unique<VoxelVolumes>(context, settings.resources)),
       injectPass_(context),
@@ -71,28 +68,13 @@ void Renderer::setGeometry(const Scene& scene) {
     if (sceneGpu_) vkDeviceWaitIdle(context_.device);
     checkSceneCanBeRendered(scene);
     sceneName_ = scene.name;
-    // The GPU works in a frame centred on the scene: far from the origin a float's step is too
-    // coarse for view and shadow matrices built from world positions (at +1e4 m it is 1 mm, and
-    // shadows there changed 9 % of the Cornell box's pixels). Centring is exact (Sterbenz).
-    sceneOrigin_ = scene.bounds().center();
-    Scene local = scene;
-    for (Vertex& vertex : local.vertices) vertex.position -= sceneOrigin_;
-    sceneBounds_ = local.bounds();
-    areaLights_ = findAreaLights(local);
-    grid_ = fitVoxelGrid(sceneBounds_, settings_.resources.voxelResolution);
+    SceneAnalysis analysis = analyzeScene(scene);
+    facts_ = std::move(analysis.facts);
+    const Scene& local = analysis.local;
+    grid_ = fitVoxelGrid(facts_.bounds, settings_.resources.voxelResolution);
     environment_ = scene.environment;
     environmentRotation_ = scene.environmentRotation;
-    environmentSun_ = scene.environmentMap ? separateSun(*scene.environmentMap) : std::nullopt;
-    const EnvironmentMap* sky = environmentSun_ ? environmentSun_->withoutSun.get() : scene.environmentMap.get();
-    sky_ = std::make_unique<SkyImage>(context_, sky);
-    skyMean_ = sky ? meanEnvironmentRadiance(*sky) : glm::vec3(1.0f);
-    brightestEmission_ = 0.0f;
-    anySpecularMaterial_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
-        return material.metallic > 0.0f || material.specularWeight > 0.0f;
-    });
-    for (const Material& material : scene.materials)
-        brightestEmission_ =
-            std::max({brightestEmission_, material.emission.r, material.emission.g, material.emission.b});
+    sky_ = std::make_unique<SkyImage>(context_, facts_.sky(scene));
     sceneGpu_ = std::make_unique<SceneGpu>(context_, local);
     voxelizePass_ = std::make_unique<VoxelizePass>(context_, local, *sceneGpu_, grid_);
     resize(settings_.image);                             // the G-buffer pipeline depends on the scene's textures
@@ -131,12 +113,12 @@ void Renderer::relight() { applyLights(lights_); }
 
 std::vector<Light> Renderer::withEnvironmentSun(const std::vector<Light>& lights) const {
     std::vector<Light> all = lights;
-    if (!environmentSun_) return all;
-    const glm::vec3 illuminance = environment_ * environmentSun_->illuminance;
+    if (!facts_.environmentSun) return all;
+    const glm::vec3 illuminance = environment_ * facts_.environmentSun->illuminance;
     const float brightest = std::max({illuminance.r, illuminance.g, illuminance.b});
     if (!(brightest > 0.0f)) return all;
     // Turned about +Y with the image (equirectangular.h): a right-handed rotation.
-    const glm::vec3 towards = environmentSun_->towardsSun;
+    const glm::vec3 towards = facts_.environmentSun->towardsSun;
     const float c = std::cos(environmentRotation_), s = std::sin(environmentRotation_);
     Light sun;
     sun.name = "the environment image's sun";
@@ -153,9 +135,9 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     checkLightsCanBeRendered(all, sceneName_);
     lights_ = lights;
     std::vector<Light> local = all;
-    for (Light& light : local) light.position -= sceneOrigin_;
+    for (Light& light : local) light.position -= facts_.origin;
     const ShadowLayout previous = shadowLayout_;
-    shadowLayout_ = layoutShadows(local, areaLights_, sceneBounds_, settings_);
+    shadowLayout_ = layoutShadows(local, facts_.areaLights, facts_.bounds, settings_);
     lightsBuffer_ =
         hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     shadowViewsBuffer_ =
@@ -186,8 +168,8 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     Material brightest;
     // The sky stands beside the brightest emitter: light it bounces into a scene lit by nothing
     // else must fit in float16 as well.
-    const glm::vec3 sky = environment_ * skyMean_;
-    brightest.emission = glm::vec3(std::max({brightestEmission_, sky.r, sky.g, sky.b}));
+    const glm::vec3 sky = environment_ * facts_.skyMean;
+    brightest.emission = glm::vec3(std::max({facts_.brightestEmission, sky.r, sky.g, sky.b}));
     emitters.materials.push_back(brightest);
     radianceScale_ = radianceStorageScale(all, emitters, grid_.voxelSize);
     stale_.shadows = true;
@@ -227,8 +209,8 @@ glm::mat4 Renderer::writeFrameConstants() {
     const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
     glsl::FrameConstants constants{};
     Camera local = camera_;
-    local.position -= sceneOrigin_;
-    constants.viewProjection = cameraMatrices(local, float(width) / float(height), sceneBounds_).viewProjection;
+    local.position -= facts_.origin;
+    constants.viewProjection = cameraMatrices(local, float(width) / float(height), facts_.bounds).viewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
     constants.cameraPosition = local.position;
     constants.lightCount = uint32_t(shadowLayout_.lights.size());
@@ -324,7 +306,7 @@ FrameStats Renderer::renderFrame() {
         });
     if (plan.runs(Pass::Voxelize)) {
         occupiedVoxels_ = static_cast<const glsl::WorkListHeader*>(occupiedHeader_.mapped)->count;
-        injectPass_.forgetAreaLights(areaLights_.empty() ? 0 : occupiedVoxels_);
+        injectPass_.forgetAreaLights(facts_.areaLights.empty() ? 0 : occupiedVoxels_);
     }
     const uint32_t slices = progressiveSlices(settings_, occupiedVoxels_);
     const InjectPass::Slice slice{slices, slicePhase_ % slices};
@@ -347,7 +329,7 @@ FrameStats Renderer::renderFrame() {
             });
             run(commands, Pass::Mips, [&] {
                 mipsPass_.record(commands, *volumes_, settings_.resources.rayVisibility);
-                if (converging && sweepEnds) recordMeanRadiance(commands);
+                if (converging && sweepEnds) bounceConvergence_.record(commands, volumes_->radiance);
             });
         });
     // Light converged anew from the light sources, or new voxels, is not the light of the last
@@ -361,7 +343,7 @@ FrameStats Renderer::renderFrame() {
         stats.bounces = 1;
         // Remembers this mean for the next bounce; only progressive bounces settle here, once a
         // whole sweep over the slices changed the light by less than the tolerance.
-        if (converging) converged = sweepEnds && meanRadianceSettled() && progressive;
+        if (converging) converged = sweepEnds && bounceConvergence_.settled() && progressive;
         if (progressive) slicePhase_ = (slice.phase + 1) % slice.count;
     }
     if (plan.runs(Pass::Bounce)) {
@@ -373,11 +355,11 @@ FrameStats Renderer::renderFrame() {
                                              skipsEmptySpace());
                     injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
                     mipsPass_.record(commands, *volumes_, settings_.resources.rayVisibility);
-                    if (converging) recordMeanRadiance(commands);
+                    if (converging) bounceConvergence_.record(commands, volumes_->radiance);
                 });
             });
             ++stats.bounces;
-            if (converging) converged = meanRadianceSettled();
+            if (converging) converged = bounceConvergence_.settled();
         }
     }
     submit([&](VkCommandBuffer commands) {
@@ -393,11 +375,12 @@ FrameStats Renderer::renderFrame() {
                 // A frame without indirect diffuse light (`--mode direct`) gets the variant without
                 // the cone loop: inlined, it slowed lavapipe's shading of every pixel 2× (1280×720).
                 .tracesDiffuseCones = !reducedDiffuse && needsDiffuseCones(settings_.shading),
-                .tracesSpecularCone = anySpecularMaterial_ && effectiveComponents(settings_.shading).indirectSpecular,
-                .areaLights = !areaLights_.empty() && settings_.shading.components.areaLights,
+                .tracesSpecularCone =
+                    facts_.anySpecularMaterial && effectiveComponents(settings_.shading).indirectSpecular,
+                .areaLights = !facts_.areaLights.empty() && settings_.shading.components.areaLights,
                 .sunShadows = shadowLayout_.sunLayers > 0,
                 .localShadows = shadowLayout_.localLayers > 0,
-                .areaLightSpecular = anySpecularMaterial_,
+                .areaLightSpecular = facts_.anySpecularMaterial,
                 .skipsEmptySpace = skipsEmptySpace(),
             };
             const ShadeInputs inputs{frameConstants_.buffer,
@@ -456,36 +439,6 @@ bool Renderer::skipsEmptySpace() const {
 void Renderer::recordOccupiedCount(VkCommandBuffer commands) {
     copyForHost(commands, volumes_->occupiedDispatch.buffer, occupiedHeader_.buffer,
                 {{0, 0, sizeof(glsl::WorkListHeader)}});
-}
-
-void Renderer::recordMeanRadiance(VkCommandBuffer commands) {
-    // The radiance volume's coarsest level is one texel: the mean over the grid.
-    const GpuImage& radiance = volumes_->radiance;
-    const uint32_t top = radiance.desc.mipLevels - 1;
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, top,
-                 1);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, top, 0, 1};
-    region.imageExtent = {1, 1, 1};
-    vkCmdCopyImageToBuffer(commands, radiance.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, meanRadiance_.buffer, 1,
-                           &region);
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, top, 1);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                  VK_ACCESS_2_HOST_READ_BIT);
-}
-
-bool Renderer::meanRadianceSettled() {
-    const uint16_t* half = static_cast<const uint16_t*>(meanRadiance_.mapped);
-    const float luminance = glsl::luminance(
-        glm::vec3(glm::unpackHalf1x16(half[0]), glm::unpackHalf1x16(half[1]), glm::unpackHalf1x16(half[2])));
-    const float change = std::abs(luminance - lastMeanRadiance_);
-    lastMeanRadiance_ = luminance;
-    return change <= kBounceTolerance * luminance;
 }
 
 Image Renderer::readImage() {

@@ -14,12 +14,14 @@
 #include "gpu/resources.h"
 #include "gpu/timing.h"
 #include "io/image_io.h"
+#include "render/bounce_convergence.h"
 #include "render/diffuse_cones_pass.h"
 #include "render/frame_plan.h"
 #include "render/gbuffer_pass.h"
 #include "render/inject_pass.h"
 #include "render/mips_pass.h"
 #include "render/resolve_pass.h"
+#include "render/scene_analysis.h"
 #include "render/scene_gpu.h"
 #include "render/settings.h"
 #include "render/shade_pass.h"
@@ -75,7 +77,7 @@ public:
     void setEnvironmentRotation(float radians);
     float environmentRotation() const { return environmentRotation_; }
     // Whether the environment image holds a sun, lit as a directional light (environment_sun.h).
-    bool environmentSunLit() const { return environmentSun_.has_value(); }
+    bool environmentSunLit() const { return facts_.environmentSun.has_value(); }
     const RenderSettings& settings() const { return settings_; }
     // Changes that need no new images or voxels (a new image size is resize(); new resources
     // need a new Renderer).
@@ -102,7 +104,7 @@ public:
 
     // The GPU's positions (G-buffer, voxel grid, shadow views) are relative to this point, the
     // centre of the scene's bounds: world = local + sceneOrigin().
-    glm::vec3 sceneOrigin() const { return sceneOrigin_; }
+    glm::vec3 sceneOrigin() const { return facts_.origin; }
     const glsl::VoxelGridParams& voxelGrid() const { return grid_; }  // in the local frame
     const VoxelVolumes& volumes() const { return *volumes_; }
     // The last frame's image (RGBA32F, width × height, GENERAL layout): the resolved one, or at one
@@ -125,41 +127,30 @@ private:
     glm::mat4 writeFrameConstants();  // returns the camera's view-projection it wrote
     // The components the voxels' light depends on (glsl::VOXEL_LIGHT_FLAGS) as `shading` shows them.
     static uint32_t voxelLightFlags(const ShadingSettings& shading);
-    // Copies the radiance volume's mean (its 1×1×1 level) to meanRadiance_, and tells, once the
-    // commands ran, whether it moved by less than kBounceTolerance since the last time.
-    void recordMeanRadiance(VkCommandBuffer commands);
-    // Copies the occupied list's header to occupiedHeader_: its count sizes the progressive slices.
     // The shading settings' empty-space skipping, or the device's default (settings.h).
     bool skipsEmptySpace() const;
+    // Copies the occupied list's header to occupiedHeader_: its count sizes the progressive slices.
     void recordOccupiedCount(VkCommandBuffer commands);
-    bool meanRadianceSettled();
 
     GpuContext& context_;
     RenderSettings settings_;
     std::string sceneName_;  // for messages
-    glm::vec3 sceneOrigin_{0.0f};
-    Bounds sceneBounds_;  // in the local frame (world − sceneOrigin_)
+    SceneFacts facts_;       // the scene's frame (local = world − facts_.origin), area lights, sun, sky mean
     Camera camera_;
     std::vector<Light> lights_;
-    glm::vec3 environment_{0.0f};                   // Scene::environment
-    float environmentRotation_ = 0.0f;              // Scene::environmentRotation
-    std::unique_ptr<SkyImage> sky_;                 // Scene::environmentMap without its sun, or the placeholder
-    glm::vec3 skyMean_{1.0f};                       // that image's mean radiance (1 without one)
-    std::optional<EnvironmentSun> environmentSun_;  // lit as a directional light (environment_sun.h)
-    std::vector<AreaLight> areaLights_;             // the scene's emissive surfaces, in the local frame
+    glm::vec3 environment_{0.0f};       // Scene::environment
+    float environmentRotation_ = 0.0f;  // Scene::environmentRotation
+    std::unique_ptr<SkyImage> sky_;     // Scene::environmentMap without its sun, or the placeholder
     StaleInputs stale_;
     glm::mat4 gbufferViewProjection_{0.0f};                // the last frame's camera
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass
-    float brightestEmission_ = 0.0f;
-    bool anySpecularMaterial_ = false;  // metallic or with a specular weight: the specular cone can matter
     float radianceScale_ = 1.0f;
     glsl::VoxelGridParams grid_;
 
     std::unique_ptr<SceneGpu> sceneGpu_;
     ShadowLayout shadowLayout_;
     Buffer frameConstants_;
-    Buffer meanRadiance_;  // host-visible RGBA16F texel
-    float lastMeanRadiance_ = 0.0f;
+    BounceConvergence bounceConvergence_;
     bool diffuseReuseSettling_ = false;  // see settling()
     // The still frames in the resolved image's mean, and the turn of the diffuse ring the next frame
     // traces (of stillFramesAveraged()); a change to the shading or the image size starts anew.
