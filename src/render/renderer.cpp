@@ -35,12 +35,6 @@ std::vector<std::string> FrameStats::skipped() const {
     return names;
 }
 
-// Host-visible buffers sized for `count` elements of T (at least one: Vulkan forbids empty buffers).
-template <typename T>
-static Buffer hostArray(GpuContext& context, size_t count, VkBufferUsageFlags usage) {
-    return Buffer(context, VkDeviceSize(std::max<size_t>(count, 1) * sizeof(T)), usage, true);
-}
-
 // Checks the settings against the device before the members below allocate anything.
 static const RenderSettings& checkedSettings(const GpuContext& context, const Scene& scene,
                                              const RenderSettings& settings) {
@@ -136,33 +130,18 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     lights_ = lights;
     std::vector<Light> local = all;
     for (Light& light : local) light.position -= facts_.origin;
-    const ShadowLayout previous = shadowLayout_;
-    shadowLayout_ = layoutShadows(local, facts_.areaLights, facts_.bounds, settings_);
-    lightsBuffer_ =
-        hostArray<glsl::GpuLight>(context_, shadowLayout_.lights.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    shadowViewsBuffer_ =
-        hostArray<glsl::ShadowView>(context_, shadowLayout_.views.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    emitterTrianglesBuffer_ = hostArray<glsl::GpuEmitterTriangle>(context_, shadowLayout_.emitterTriangles.size(),
-                                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    // A scene without lights has empty arrays, whose data() may be null: memcpy must not see it (UBSan).
-    if (!shadowLayout_.lights.empty())
-        std::memcpy(lightsBuffer_.mapped, shadowLayout_.lights.data(),
-                    shadowLayout_.lights.size() * sizeof(glsl::GpuLight));
-    if (!shadowLayout_.views.empty())
-        std::memcpy(shadowViewsBuffer_.mapped, shadowLayout_.views.data(),
-                    shadowLayout_.views.size() * sizeof(glsl::ShadowView));
-    if (!shadowLayout_.emitterTriangles.empty())
-        std::memcpy(emitterTrianglesBuffer_.mapped, shadowLayout_.emitterTriangles.data(),
-                    shadowLayout_.emitterTriangles.size() * sizeof(glsl::GpuEmitterTriangle));
+    const ShadowLayout previous = lightTable_.layout();
+    lightTable_.upload(context_, layoutShadows(local, facts_.areaLights, facts_.bounds, settings_));
+    const ShadowLayout& layout = lightTable_.layout();
     // New arrays only when the number of shadow maps changed; otherwise they are redrawn in place.
-    if (!shadowPass_ || previous.sunLayers != shadowLayout_.sunLayers ||
-        previous.localLayers != shadowLayout_.localLayers || previous.areaLayers != shadowLayout_.areaLayers) {
+    if (!shadowPass_ || previous.sunLayers != layout.sunLayers || previous.localLayers != layout.localLayers ||
+        previous.areaLayers != layout.areaLayers) {
         if (shadowPass_) vkDeviceWaitIdle(context_.device);
-        shadowPass_ = std::make_unique<ShadowPass>(context_, shadowLayout_, settings_, *sceneGpu_);
+        shadowPass_ = std::make_unique<ShadowPass>(context_, layout, settings_, *sceneGpu_);
     }
     // Only the maps whose views moved are redrawn: moving the sun in tile-room redrew its 48 lamp
     // cube faces every frame.
-    staleShadowArrays_ |= changedShadowArrays(previous, shadowLayout_);
+    staleShadowArrays_ |= changedShadowArrays(previous, layout);
     // The brightest emitter stands in for the scene's materials in the storage scale.
     Scene emitters;
     Material brightest;
@@ -213,9 +192,9 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.viewProjection = cameraMatrices(local, float(width) / float(height), facts_.bounds).viewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
     constants.cameraPosition = local.position;
-    constants.lightCount = uint32_t(shadowLayout_.lights.size());
-    constants.firstAreaLight = shadowLayout_.firstAreaLight;
-    constants.shadowViewCount = uint32_t(shadowLayout_.views.size());
+    constants.lightCount = uint32_t(lightTable_.layout().lights.size());
+    constants.firstAreaLight = lightTable_.layout().firstAreaLight;
+    constants.shadowViewCount = uint32_t(lightTable_.layout().views.size());
     const ShadingSettings& shading = settings_.shading;
     constants.componentFlags = componentFlags(effectiveComponents(shading)) |
                                (shading.mode != RenderMode::Indirect ? glsl::SHOW_SKY : 0u) |
@@ -296,7 +275,8 @@ FrameStats Renderer::renderFrame() {
     if (plan.runs(Pass::Shadow) || plan.runs(Pass::Voxelize))
         submit([&](VkCommandBuffer commands) {
             run(commands, Pass::Shadow, [&] {
-                shadowPass_->record(commands, *sceneGpu_, shadowLayout_, shadowViewsBuffer_.buffer, staleShadowArrays_);
+                shadowPass_->record(commands, *sceneGpu_, lightTable_.layout(), lightTable_.buffers().shadowViews,
+                                    staleShadowArrays_);
                 staleShadowArrays_ = 0;
             });
             run(commands, Pass::Voxelize, [&] {
@@ -324,7 +304,7 @@ FrameStats Renderer::renderFrame() {
                 if (progressive)
                     injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, slice, occupiedVoxels_,
                                              skipsEmptySpace());
-                injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_,
+                injectPass_.record(commands, frameConstants_.buffer, lightTable_.buffers(), *shadowPass_, *volumes_,
                                    progressive);
             });
             run(commands, Pass::Mips, [&] {
@@ -353,7 +333,8 @@ FrameStats Renderer::renderFrame() {
                 run(commands, Pass::Bounce, [&] {
                     injectPass_.recordGather(commands, frameConstants_.buffer, *volumes_, *sky_, {}, occupiedVoxels_,
                                              skipsEmptySpace());
-                    injectPass_.record(commands, frameConstants_.buffer, lightBuffers(), *shadowPass_, *volumes_, true);
+                    injectPass_.record(commands, frameConstants_.buffer, lightTable_.buffers(), *shadowPass_, *volumes_,
+                                       true);
                     mipsPass_.record(commands, *volumes_, settings_.resources.rayVisibility);
                     if (converging) bounceConvergence_.record(commands, volumes_->radiance);
                 });
@@ -378,14 +359,14 @@ FrameStats Renderer::renderFrame() {
                 .tracesSpecularCone =
                     facts_.anySpecularMaterial && effectiveComponents(settings_.shading).indirectSpecular,
                 .areaLights = !facts_.areaLights.empty() && settings_.shading.components.areaLights,
-                .sunShadows = shadowLayout_.sunLayers > 0,
-                .localShadows = shadowLayout_.localLayers > 0,
+                .sunShadows = lightTable_.layout().sunLayers > 0,
+                .localShadows = lightTable_.layout().localLayers > 0,
                 .areaLightSpecular = facts_.anySpecularMaterial,
                 .skipsEmptySpace = skipsEmptySpace(),
             };
             const ShadeInputs inputs{frameConstants_.buffer,
                                      sceneGpu_->materials.buffer,
-                                     lightBuffers(),
+                                     lightTable_.buffers(),
                                      reducedDiffuse ? diffuseConesPass_->diffuse().view : VK_NULL_HANDLE,
                                      variant,
                                      sky_.get()};

@@ -19,6 +19,7 @@
 #include "render/frame_plan.h"
 #include "render/gbuffer_pass.h"
 #include "render/inject_pass.h"
+#include "render/light_table.h"
 #include "render/mips_pass.h"
 #include "render/resolve_pass.h"
 #include "render/scene_analysis.h"
@@ -148,7 +149,7 @@ private:
     glsl::VoxelGridParams grid_;
 
     std::unique_ptr<SceneGpu> sceneGpu_;
-    ShadowLayout shadowLayout_;
+    LightTable lightTable_;  // the lights and shadow views as the shaders read them
     Buffer frameConstants_;
     BounceConvergence bounceConvergence_;
     bool diffuseReuseSettling_ = false;  // see settling()
@@ -160,12 +161,6 @@ private:
     uint32_t slicePhase_ = 0;  // the occupied voxels' slice the next progressive bounce gathers for
     Buffer occupiedHeader_;    // host-visible copy of the occupied list's header, made after voxelizing
     uint32_t occupiedVoxels_ = 0;
-    Buffer lightsBuffer_;
-    Buffer shadowViewsBuffer_;
-    Buffer emitterTrianglesBuffer_;
-    LightBuffers lightBuffers() const {
-        return {lightsBuffer_.buffer, shadowViewsBuffer_.buffer, emitterTrianglesBuffer_.buffer};
-    }
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<VoxelVolumes> volumes_;  // sized by the settings' resources, kept across scenes
     std::unique_ptr<VoxelizePass> voxelizePass_;
