@@ -170,7 +170,8 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
         // turns averaged), then the frames of a still view.
         const auto settleStart = std::chrono::steady_clock::now();
         m.settleFrames = 0;
-        for (; renderer->settling() && m.settleFrames < kMaxSettleFrames; ++m.settleFrames) renderer->renderFrame();
+        for (; renderer->settling() && m.settleFrames < Renderer::kMaxSettleFrames; ++m.settleFrames)
+            renderer->renderFrame();
         m.settleMilliseconds =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - settleStart).count();
 

@@ -79,9 +79,6 @@ struct Measurement {
     Image fullImage;  // what the static frames showed
 };
 
-// Frames a measurement waits at most for the image to settle.
-inline constexpr uint32_t kMaxSettleFrames = 64;
-
 struct MeasureOptions {
     uint32_t warmupFrames = 1;
     uint32_t frames = 3;

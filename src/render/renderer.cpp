@@ -167,9 +167,12 @@ void Renderer::setEnvironmentRotation(float radians) {
 }
 
 void Renderer::setShading(const ShadingSettings& shading) {
-    // Other cones gather other light: the reduced diffuse light of the last frames no longer holds.
-    if (diffuseConesPass_ && shading != settings_.shading) diffuseConesPass_->forgetHistory();
-    if (shading != settings_.shading) shadingChanged_ = true;
+    // Other cones gather other light: the reduced diffuse light of the last frames no longer holds,
+    // nor does the still frames' mean.
+    if (shading != settings_.shading) {
+        if (diffuseConesPass_) diffuseConesPass_->forgetHistory();
+        framesAveraged_ = 0;
+    }
     // Shadows or area lights switched on or off light the voxels differently, the area lights'
     // part included.
     if (voxelLightFlags(shading) != voxelLightFlags(settings_.shading)) {
@@ -241,10 +244,8 @@ FrameStats Renderer::renderFrame() {
     gbufferViewProjection_ = viewProjection;
     stats.plan = planFrame(stale_, settings_);
     const FramePlan& plan = stats.plan;
-    // New shading, view, light or geometry: the still frames' mean starts anew.
-    if (shadingChanged_ || plan.runs(Pass::GBuffer) || plan.runs(Pass::Inject) || plan.runs(Pass::Shadow))
-        framesAveraged_ = 0;
-    shadingChanged_ = false;
+    // A new view, light or geometry: the still frames' mean starts anew (new shading, in setShading).
+    if (plan.runs(Pass::GBuffer) || plan.runs(Pass::Inject) || plan.runs(Pass::Shadow)) framesAveraged_ = 0;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
     const bool progressive = bouncesProgressively(settings_);
     // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
@@ -373,8 +374,7 @@ FrameStats Renderer::renderFrame() {
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
         });
         // Once every turn of the ring is in the mean, the resolved image stays as it is.
-        const bool meanComplete = framesAveraged_ >= stillFramesAveraged(settings_.shading) && framesAveraged_ > 1;
-        if (!meanComplete)
+        if (!stillMeanComplete())
             run(commands, Pass::Resolve, [&] {
                 const bool settled =
                     (!progressive || converged) && (!plan.runs(Pass::DiffuseCones) || diffuseConesPass_->settled());
@@ -395,7 +395,7 @@ FrameStats Renderer::renderFrame() {
 float Renderer::averageStillFrame(bool settled) {
     const uint32_t turns = stillFramesAveraged(settings_.shading);
     if (!settled || turns == 1) {
-        framesAveraged_ = settled ? 1 : 0;
+        framesAveraged_ = 0;
         return 1.0f;
     }
     ++framesAveraged_;

@@ -94,12 +94,14 @@ public:
     // turned (ShadingSettings::diffuseConeTurns) are not all in the image's mean: the next frame
     // changes the image even if nothing else does.
     bool settling() const {
-        const uint32_t averaged = stillFramesAveraged(settings_.shading);
-        return stale_.bounces || diffuseReuseSettling_ || (averaged > 1 && framesAveraged_ < averaged);
+        return stale_.bounces || diffuseReuseSettling_ ||
+               (stillFramesAveraged(settings_.shading) > 1 && !stillMeanComplete());
     }
+    // Frames renderSettled() and `vct bench` wait at most for the image to settle.
+    static constexpr uint32_t kMaxSettleFrames = 64;
     // Renders frames until the image settles (at most `maxFrames`): the image a still viewer
     // converges to, as `vct render` and `vct bench` show it. Returns the last frame's stats.
-    FrameStats renderSettled(uint32_t maxFrames = 64);
+    FrameStats renderSettled(uint32_t maxFrames = kMaxSettleFrames);
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
 
@@ -121,6 +123,11 @@ private:
     // This frame's share of the resolved mean (ResolvePass::record); counts the frame into it and
     // turns the ring for the next one where `settled` (its image will not change by itself).
     float averageStillFrame(bool settled);
+    // Every turn of the ring is in the mean (with turns to average).
+    bool stillMeanComplete() const {
+        const uint32_t turns = stillFramesAveraged(settings_.shading);
+        return turns > 1 && framesAveraged_ >= turns;
+    }
     // `lights` and, where the environment image has a sun, that sun as a directional light, turned
     // and scaled as the sky is now.
     std::vector<Light> withEnvironmentSun(const std::vector<Light>& lights) const;
@@ -157,7 +164,6 @@ private:
     // traces (of stillFramesAveraged()); a change to the shading or the image size starts anew.
     uint32_t framesAveraged_ = 0;
     uint32_t ringTurn_ = 0;
-    bool shadingChanged_ = false;
     uint32_t slicePhase_ = 0;  // the occupied voxels' slice the next progressive bounce gathers for
     Buffer occupiedHeader_;    // host-visible copy of the occupied list's header, made after voxelizing
     uint32_t occupiedVoxels_ = 0;
