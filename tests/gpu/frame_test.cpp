@@ -101,10 +101,6 @@ TEST_F(Frame, GeometryMoveRevoxelizesAndRedrawsShadows) {
     for (const char* pass : {"shadow", "voxelize", "inject", "mips"}) EXPECT_TRUE(stats.ran(pass)) << pass;
 }
 
-static bool sameImages(const Image& a, const Image& b) {
-    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
-}
-
 TEST_F(Frame, SwitchingShadowsOrAreaLightsRelightsTheVoxels) {
     // The voxels' light depends on both (and the area lights' part of it is kept between
     // injections): switched off and on again, the indirect light is a fresh render's each time.
@@ -167,23 +163,20 @@ TEST_F(Frame, ShadingPipelinesFollowWhatTheFrameShows) {
     Renderer renderer(gpu(), metal, settings);
     renderer.renderFrame();
     const Image lit = renderer.readImage();
-    const auto same = [](const Image& a, const Image& b) {
-        return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * 4) == 0;
-    };
     ShadingSettings shading = settings.shading;
     shading.components.indirectSpecular = false;
     renderer.setShading(shading);
     renderer.renderFrame();
-    EXPECT_FALSE(same(renderer.readImage(), lit)) << "the sphere reflected nothing";
+    EXPECT_FALSE(sameImages(renderer.readImage(), lit)) << "the sphere reflected nothing";
     shading.components.indirectSpecular = true;
     shading.debugView = DebugView::Normal;
     renderer.setShading(shading);
     renderer.renderFrame();
-    EXPECT_FALSE(same(renderer.readImage(), lit)) << "the debug view showed the lit image";
+    EXPECT_FALSE(sameImages(renderer.readImage(), lit)) << "the debug view showed the lit image";
     shading.debugView = DebugView::None;
     renderer.setShading(shading);
     renderer.renderFrame();
-    EXPECT_TRUE(same(renderer.readImage(), lit)) << "back from the debug view, the lit image changed";
+    EXPECT_TRUE(sameImages(renderer.readImage(), lit)) << "back from the debug view, the lit image changed";
 }
 
 TEST_F(Frame, TheDepthViewSpansTheSceneFromNearToFar) {

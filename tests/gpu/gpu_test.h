@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "gpu/context.h"
 #include "io/image_io.h"
@@ -15,6 +16,11 @@
 namespace vct::test {
 
 GpuContext& gpu();
+
+// Whether two images are the same, bit for bit.
+inline bool sameImages(const Image& a, const Image& b) {
+    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
 
 // The largest difference of any channel between two images of one size, relative to the
 // reference's mean.

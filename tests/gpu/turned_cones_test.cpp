@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include "bench/metrics.h"
 #include "gpu_test.h"
@@ -27,10 +26,6 @@ RenderSettings turnedSettings(uint32_t turns) {
     return settings;
 }
 
-bool identical(const Image& a, const Image& b) {
-    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
-}
-
 class TurnedCones : public GpuTest {
 protected:
     Scene scene = loadScene("cornell");
@@ -44,7 +39,7 @@ TEST_F(TurnedCones, TheFirstFrameIsTheFixedRingsAndEachTurnIsOneMoreStillFrame) 
 
     Renderer turned(gpu(), scene, turnedSettings(kTurns));
     turned.renderFrame();
-    EXPECT_TRUE(identical(turned.readImage(), fixedImage)) << "the first turn is the fixed ring";
+    EXPECT_TRUE(sameImages(turned.readImage(), fixedImage)) << "the first turn is the fixed ring";
     uint32_t frames = 1;
     while (turned.settling() && frames < 10) {
         turned.renderFrame();
@@ -59,7 +54,7 @@ TEST_F(TurnedCones, TheFirstFrameIsTheFixedRingsAndEachTurnIsOneMoreStillFrame) 
     for (float value : mean.rgb) ASSERT_TRUE(std::isfinite(value) && value >= 0.0f);
     // A settled mean stays as it is.
     turned.renderFrame();
-    EXPECT_TRUE(identical(turned.readImage(), mean));
+    EXPECT_TRUE(sameImages(turned.readImage(), mean));
 }
 
 TEST_F(TurnedCones, TheMeanHoldsEveryTurnWhicheverItStartsAt) {
@@ -97,11 +92,11 @@ TEST_F(TurnedCones, NewShadingStartsTheMeanAnew) {
     fixed.setShading(shading);
     const FrameStats stats = fixed.renderSettled();
     EXPECT_TRUE(stats.ran("resolve"));
-    EXPECT_FALSE(identical(fixed.readImage(), fixedImage));
+    EXPECT_FALSE(sameImages(fixed.readImage(), fixedImage));
     shading.diffuseConeTurns = 1;
     fixed.setShading(shading);
     fixed.renderSettled();
-    EXPECT_TRUE(identical(fixed.readImage(), fixedImage)) << "the fixed ring's image again";
+    EXPECT_TRUE(sameImages(fixed.readImage(), fixedImage)) << "the fixed ring's image again";
 }
 
 TEST_F(TurnedCones, TheSunRoomsStreaksAverageOut) {
