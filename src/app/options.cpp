@@ -6,6 +6,8 @@
 
 #include "error.h"
 #include "render/presets.h"
+#include "render/setting_table.h"
+#include "scene/default_light.h"
 #include "scene/load.h"
 
 namespace vct {
@@ -21,12 +23,6 @@ void applyPreset(const OptionValue& value, RenderSettings& settings) {
     const std::optional<RenderSettings> preset = findRenderPreset(value.text());
     if (!preset) throw Error("--preset must be one of " + presetNameList() + ", not '" + value.text() + "'");
     settings = *preset;
-}
-
-void applyMode(const OptionValue& value, RenderSettings& settings) {
-    const std::optional<RenderMode> mode = parseRenderMode(value.text());
-    if (!mode) throw Error("--mode must be full, direct or indirect, not '" + value.text() + "'");
-    settings.shading.mode = *mode;
 }
 
 void applyDisabled(const OptionValue& value, RenderSettings& settings) {
@@ -50,103 +46,43 @@ std::string componentOptionNames() {
     return names;
 }
 
+// A setting's row as an option: its help says what it takes unless its shape lists it.
+Option settingOption(const SettingRow& row) {
+    const std::string domain = row.namesOnly() ? "" : "; " + settingDomain(row);
+    return {
+        row.option, row.shape, row.help + domain,
+        [&row](const OptionValue& value, RenderSettings& settings) {
+            const std::string text = value.text();
+            const std::optional<double> parsed = parseSetting(row, text);
+            if (!parsed)
+                throw Error("--" + std::string(row.option) + " must be " + settingDomain(row) + ", not '" + text + "'");
+            row.set(settings, *parsed);
+        },
+        [&row](const RenderSettings& settings) { return settingText(row, settings); }};
+}
+
 std::vector<Option> makeSharedOptions() {
-    using S = RenderSettings;
-    using V = OptionValue;
     std::string sceneNames;
     for (const std::string& name : builtinSceneNames()) sceneNames += " " + name;
-    return {
-        {"preset", "NAME", "start from a preset (" + presetNameList() + "); the options below override it",
-         applyPreset},
-        {"width", "W", "image width in pixels", [](const V& v, S& s) { s.image.width = v.whole(1, 16384); },
-         [](const S& s) { return std::to_string(s.image.width); }},
-        {"height", "H", "image height in pixels", [](const V& v, S& s) { s.image.height = v.whole(1, 16384); },
-         [](const S& s) { return std::to_string(s.image.height); }},
-        {"supersample", "N", "samples per pixel side, averaged over the pixel",
-         [](const V& v, S& s) { s.image.supersample = v.whole(1, 8); },
-         [](const S& s) { return std::to_string(s.image.supersample); }},
-        {"diffuse-resolution", "full|half|quarter",
-         "diffuse cones for every sample, or for one in 2×2 or 4×4, upsampled along the surfaces",
-         [](const V& v, S& s) {
-             const std::string& text = v.text();
-             if (text != "full" && text != "half" && text != "quarter")
-                 throw Error("--diffuse-resolution must be full, half or quarter, not '" + text + "'");
-             s.image.diffuseDownscale = text == "full" ? 1u : text == "half" ? 2u : 4u;
-         },
-         [](const S& s) { return diffuseResolutionName(s.image.diffuseDownscale); }},
-        {"mode", "full|direct|indirect", "which light the image holds", applyMode,
-         [](const S& s) { return std::string(renderModeName(s.shading.mode)); }},
-        {"disable", "LIST", "components to switch off, comma-separated: " + componentOptionNames(), applyDisabled},
-        {"ambient", "F", "non-physical ambient light factor",
-         [](const V& v, S& s) { s.shading.ambientFactor = v.number(0.0f, 1e6f); },
-         [](const S& s) { return number(s.shading.ambientFactor); }},
-        {"voxels", "N", "voxels per side of the grid, a power of two 32..512",
-         [](const V& v, S& s) {
-             const uint32_t resolution = v.whole(32, 512);
-             // Checked here too, not only by the renderer: before the scene loads or the device opens.
-             if ((resolution & (resolution - 1)) != 0)
-                 throw Error("--voxels: the voxel resolution must be a power of two from 32 to 512, not " +
-                             std::to_string(resolution));
-             s.resources.voxelResolution = resolution;
-         },
-         [](const S& s) { return std::to_string(s.resources.voxelResolution); }},
-        {"voxel-mips", "isotropic|anisotropic", "one mip chain or six directional ones",
-         [](const V& v, S& s) {
-             if (v.text() != "isotropic" && v.text() != "anisotropic")
-                 throw Error("--voxel-mips must be isotropic or anisotropic, not '" + v.text() + "'");
-             s.resources.anisotropicVoxels = v.text() == "anisotropic";
-         },
-         [](const S& s) { return std::string(s.resources.anisotropicVoxels ? "anisotropic" : "isotropic"); }},
-        {"visibility", "mips|rays",
-         "what stops a cone: the filtered mips alone, or also a ray along it through the finest voxels "
-         "(no light through walls with voxels of their own; slower)",
-         [](const V& v, S& s) {
-             if (v.text() != "mips" && v.text() != "rays")
-                 throw Error("--visibility must be mips or rays, not '" + v.text() + "'");
-             s.resources.rayVisibility = v.text() == "rays";
-         },
-         [](const S& s) { return std::string(s.resources.rayVisibility ? "rays" : "mips"); }},
-        {"bounces", "N|converged", "bounces of indirect light; converged iterates until it changes < 1 %",
-         [](const V& v, S& s) {
-             s.resources.bounces = v.text() == "converged" ? kConvergedBounces : v.whole(1, kMaxBouncesPerFrame);
-         },
-         [](const S& s) { return bouncesText(s.resources.bounces); }},
-        {"cones", "N", "diffuse cones", [](const V& v, S& s) { s.shading.diffuseConeCount = v.whole(1, 32); },
-         [](const S& s) { return std::to_string(s.shading.diffuseConeCount); }},
-        {"cone-aperture", "DEGREES", "full angle of each diffuse cone",
-         [](const V& v, S& s) { s.shading.diffuseConeAperture = v.number(1.0f, 120.0f); },
-         [](const S& s) { return number(s.shading.diffuseConeAperture); }},
-        {"cone-turns", "N",
-         "the diffuse cones' ring turned N times about the normal, one still frame each, and the frames averaged "
-         "(1 = fixed directions)",
-         [](const V& v, S& s) { s.shading.diffuseConeTurns = v.whole(1, 16); },
-         [](const S& s) { return std::to_string(s.shading.diffuseConeTurns); }},
-        {"cone-step", "F", "cone step as a fraction of its diameter",
-         [](const V& v, S& s) { s.shading.coneStep = v.number(0.05f, 4.0f); },
-         [](const S& s) { return number(s.shading.coneStep); }},
-        {"cone-max-distance", "F", "longest cone, as a fraction of the grid's side; past it a cone sees the sky",
-         [](const V& v, S& s) { s.shading.coneMaxDistance = v.number(0.01f, 2.0f); },
-         [](const S& s) { return number(s.shading.coneMaxDistance); }},
-        {"cone-start-offset", "VOXELS", "gap between the surface and a cone's apex",
-         [](const V& v, S& s) { s.shading.coneStartOffset = v.number(0.0f, 8.0f); },
-         [](const S& s) { return number(s.shading.coneStartOffset); }},
-        {"shadow-map", "N", "sun shadow-map size",
-         [](const V& v, S& s) { s.resources.sunShadowMapSize = v.whole(16, 16384); },
-         [](const S& s) { return std::to_string(s.resources.sunShadowMapSize); }},
-        {"local-shadow-map", "N", "shadow-map size of each spot light and point-light cube face",
-         [](const V& v, S& s) { s.resources.localShadowMapSize = v.whole(16, 16384); },
-         [](const S& s) { return std::to_string(s.resources.localShadowMapSize); }},
-        {"area-shadow-map", "N", "shadow-map size of each cube face of an area light (an emissive surface)",
-         [](const V& v, S& s) { s.resources.areaShadowMapSize = v.whole(16, 16384); },
-         [](const S& s) { return std::to_string(s.resources.areaShadowMapSize); }},
+    std::vector<Option> options = {{"preset", "NAME",
+                                    "start from a preset (" + presetNameList() + "); the options below override it",
+                                    applyPreset}};
+    // The render settings, from their table (src/render/setting_table.h).
+    for (const SettingRow& row : settingTable()) {
+        options.push_back(settingOption(row));
+        if (row.option == std::string("mode"))
+            options.push_back({"disable", "LIST",
+                               "components to switch off, comma-separated: " + componentOptionNames(), applyDisabled});
+    }
+    const std::vector<Option> sceneAndDevice = {
         {"scene", "FILE|NAME", "a .gltf/.glb file or a built-in scene (default cornell):" + sceneNames},
         {"camera-pos", "x,y,z", "camera position (overrides the scene's camera)"},
         {"camera-target", "x,y,z", "the point the camera looks at"},
         {"fov", "DEGREES", "vertical field of view"},
         {"light-dir", "x,y,z", "direction the sun's light travels (adds a sun if the scene has none)"},
         {"light-intensity", "E",
-         "illuminance (lux) of the scene's first sun, or of the one --light-dir adds (default 3); "
-         "refused without --light-dir if the scene has no sun"},
+         "illuminance (lux) of the scene's first sun, or of the one --light-dir adds (default " +
+             number(kDefaultSunIlluminance) + "); refused without --light-dir if the scene has no sun"},
         {"environment", "R,G,B|FILE.hdr",
          "the sky every ray leaving the scene sees: a uniform radiance, or an equirectangular Radiance "
          "image (its centre looks along -Z, its top up) (default black; a scene without light gets a "
@@ -159,6 +95,8 @@ std::vector<Option> makeSharedOptions() {
         {"allowed-root", "DIR", "let the scene's URIs reach files under DIR (default: its folder)"},
         {"gpu-timeout", "SECONDS", "longest wait for the GPU before giving up (default 120)"},
     };
+    options.insert(options.end(), sceneAndDevice.begin(), sceneAndDevice.end());
+    return options;
 }
 
 }  // namespace

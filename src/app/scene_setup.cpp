@@ -20,7 +20,7 @@ SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
     if (overrides.lightDirection && glm::length(*overrides.lightDirection) < 1e-6f)
         throw Error("--light-dir must not be the zero vector");
     if (arguments.has("light-intensity"))
-        overrides.lightIntensity = arguments.number("light-intensity", 3.0f, 0.0f, 1e9f);
+        overrides.lightIntensity = arguments.number("light-intensity", kDefaultSunIlluminance, 0.0f, 1e9f);
     const std::string environment = arguments.text("environment", "");
     if (namesEnvironmentImage(environment)) {
         checkEnvironmentImageExists(environment);
@@ -113,7 +113,7 @@ void applySceneOverrides(const SceneOverrides& overrides, Scene& scene) {
             sun = &scene.lights.back();
             sun->name = "command-line sun";
             sun->type = LightType::Directional;
-            sun->intensity = 3.0f;
+            sun->intensity = kDefaultSunIlluminance;
         }
         sun->direction = glm::normalize(*overrides.lightDirection);
         if (overrides.lightIntensity) sun->intensity = *overrides.lightIntensity;

@@ -4,6 +4,7 @@
 
 #include "error.h"
 #include "render/presets.h"
+#include "render/setting_table.h"
 
 namespace vct::bench {
 namespace {
@@ -41,31 +42,35 @@ void addPresets(std::vector<BenchSetting>& matrix, const RenderSettings& imageSe
 
 }  // namespace
 
-std::string settingLabel(const RenderSettings& s) {
-    char text[128];
-    std::snprintf(text, sizeof text, "v%u c%u a%g s%g %s b%s", s.resources.voxelResolution, s.shading.diffuseConeCount,
-                  double(s.shading.diffuseConeAperture), double(s.shading.coneStep),
-                  s.resources.anisotropicVoxels ? "aniso" : "iso",
-                  s.resources.bounces == kConvergedBounces ? "conv" : std::to_string(s.resources.bounces).c_str());
-    std::string label = text;
-    if (s.image.supersample != 1) label += " ss" + std::to_string(s.image.supersample);
-    if (s.resources.sunShadowMapSize != 2048) label += " sm" + std::to_string(s.resources.sunShadowMapSize);
-    if (s.image.diffuseDownscale != 1) label += " d" + std::to_string(s.image.diffuseDownscale);
-    if (s.resources.rayVisibility) label += " rays";
-    if (s.shading.diffuseConeTurns != 1) label += " t" + std::to_string(s.shading.diffuseConeTurns);
-    return label;
+std::string settingLabel(const RenderSettings& settings) {
+    // What a label leaves out: the matrix's base, the renderer's defaults at one sample a pixel
+    // with a 2048² sun shadow map. Its main axes first, always; then what differs from the base.
+    RenderSettings base;
+    base.image.supersample = 1;
+    base.resources.sunShadowMapSize = 2048;
+    std::string always, differs;
+    for (const SettingRow& row : settingTable()) {
+        if (!row.benchKey) continue;
+        const double value = row.get(settings);
+        if (row.alwaysInLabel) always += (always.empty() ? "" : " ") + labelPart(row, value);
+        else if (value != row.get(base)) differs += " " + labelPart(row, value);
+    }
+    return always + differs;
 }
 
 std::vector<std::string> settingLabelLegend() {
-    return {
-        "labels: v64 = 64³ voxels, c6 = 6 diffuse cones,",
-        "a40 = 40° cone aperture, s0.5 = step of 0.5 cone diameters,",
-        "aniso / iso = six directional mip chains / one,",
-        "bconv / b1 = bounces until converged / one bounce,",
-        "ss2 = 2×2 samples a pixel, sm4096 = 4096² sun shadow map (else 2048²),",
-        "d4 = diffuse cones traced once per 4×4 pixels, rays = ray visibility,",
-        "t4 = the cones' ring turned over 4 still frames, averaged; * = on the front",
-    };
+    // In the label's order: the parts every label has, then the others.
+    std::vector<std::string> lines = {"labels:"};
+    for (bool always : {true, false})
+        for (const SettingRow& row : settingTable()) {
+            if (!row.benchKey || !row.legend || row.alwaysInLabel != always) continue;
+            const std::string part = std::string(row.legend) + ",";
+            if (lines.back().size() + 1 + part.size() > 72) lines.push_back(part);
+            else lines.back() += " " + part;
+        }
+    lines.back().back() = ';';
+    lines.back() += " * = on the front";
+    return lines;
 }
 
 std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {

@@ -10,13 +10,14 @@
 namespace vct::bench {
 
 struct BenchSetting {
-    std::string label;   // short, e.g. "v64 c6 a60 s0.5 aniso b1"
+    std::string label;   // short, e.g. "v64 aniso b1 c6 a60 s0.5"
     std::string preset;  // the preset this setting is, or empty
     RenderSettings settings;
 };
 
-// "v64 c6 a60 s0.5 aniso b1", plus " ss2" when it supersamples, " sm4096" for a sun shadow map
-// other than 2048², " d4" for diffuse cones at a reduced resolution.
+// "v64 aniso b1 c6 a60 s0.5": the voxels, mips, bounces, cones, aperture and step, then each
+// setting the bench records where it differs from the matrix's base (" ss2", " sm4096", " d4",
+// " rays", " t4", ...), as the setting table spells it (src/render/setting_table.h).
 std::string settingLabel(const RenderSettings& settings);
 // What each part of a label means, a few lines for the plot's key.
 std::vector<std::string> settingLabelLegend();

@@ -9,6 +9,7 @@
 #include "bench/pareto.h"
 #include "bench/svg_plot.h"
 #include "io/json_text.h"
+#include "render/setting_table.h"
 
 namespace vct::bench {
 namespace {
@@ -55,6 +56,18 @@ std::string jsonError(const ImageError& e) {
     return "{\"relmse\": " + jsonNumber(e.relMse) + ", \"rmse\": " + jsonNumber(e.rmse) +
            ", \"luminance_ratio\": " + jsonNumber(e.luminanceRatio) + ", \"share_off\": " + jsonNumber(e.shareOff) +
            "}";
+}
+
+// The settings the bench records, each under its key: a named value as its name, else the number.
+std::string jsonSettings(const RenderSettings& settings) {
+    std::string json;
+    for (const SettingRow& row : settingTable()) {
+        if (!row.benchKey) continue;
+        const double value = row.get(settings);
+        json += (json.empty() ? "{" : ", ") + jsonString(row.benchKey) + ": " +
+                (namedValue(row, value) ? jsonString(settingText(row, value)) : jsonNumber(value));
+    }
+    return json + "}";
 }
 
 std::string jsonTiming(const FrameTiming& timing) {
@@ -119,9 +132,10 @@ std::vector<SettingSummary> summarize(const std::vector<Measurement>& measuremen
 std::string toCsv(const std::vector<Measurement>& measurements) {
     const std::vector<std::string> passes = passNames(measurements);
     std::ostringstream csv;
-    csv << "scene,setting,preset,voxels,cones,aperture_deg,step,mips,bounces,supersample,diffuse_resolution,sun_shadow_"
-           "map,"
-           "static_gpu_ms,static_cpu_ms,light_change_gpu_ms,light_change_cpu_ms,voxelize_ms,light_change_and_voxelize_"
+    csv << "scene,setting,preset,";
+    for (const SettingRow& row : settingTable())
+        if (row.benchKey) csv << row.benchKey << ",";
+    csv << "static_gpu_ms,static_cpu_ms,light_change_gpu_ms,light_change_cpu_ms,voxelize_ms,light_change_and_voxelize_"
            "ms,"
            "device_mb,finite";
     for (const char* mode : kModes)
@@ -132,14 +146,12 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
     csv << "\n";
     for (const Measurement& m : measurements) {
         const RenderSettings& s = m.setting.settings;
-        csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << ","
-            << s.resources.voxelResolution << "," << s.shading.diffuseConeCount << ","
-            << number(s.shading.diffuseConeAperture) << "," << number(s.shading.coneStep) << ","
-            << (s.resources.anisotropicVoxels ? "anisotropic" : "isotropic") << "," << bouncesText(s.resources.bounces)
-            << "," << s.image.supersample << "," << diffuseResolutionName(s.image.diffuseDownscale) << ","
-            << s.resources.sunShadowMapSize << "," << number(m.staticFrame.gpuMilliseconds) << ","
-            << number(m.staticFrame.cpuMilliseconds) << "," << number(m.lightChangeFrame.gpuMilliseconds) << ","
-            << number(m.lightChangeFrame.cpuMilliseconds) << "," << number(m.voxelizeMilliseconds) << ","
+        csv << csvField(m.scene) << "," << m.setting.label << "," << m.setting.preset << ",";
+        for (const SettingRow& row : settingTable())
+            if (row.benchKey) csv << settingText(row, s) << ",";
+        csv << number(m.staticFrame.gpuMilliseconds) << "," << number(m.staticFrame.cpuMilliseconds) << ","
+            << number(m.lightChangeFrame.gpuMilliseconds) << "," << number(m.lightChangeFrame.cpuMilliseconds) << ","
+            << number(m.voxelizeMilliseconds) << ","
             << number(m.lightChangeFrame.cpuMilliseconds + m.voxelizeMilliseconds) << ","
             << number(double(m.deviceMemoryBytes) / (1024.0 * 1024.0)) << "," << (m.imagesFinite ? 1 : 0);
         for (int mode = 0; mode < 3; ++mode) {
@@ -179,19 +191,8 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
         const RenderSettings& s = m.setting.settings;
         json << (i ? ",\n    " : "\n    ") << "{\"scene\": " << jsonString(m.scene)
              << ", \"setting\": " << jsonString(m.setting.label) << ", \"preset\": " << jsonString(m.setting.preset)
-             << ",\n     \"settings\": {\"voxels\": " << s.resources.voxelResolution
-             << ", \"cones\": " << s.shading.diffuseConeCount
-             << ", \"aperture_deg\": " << jsonNumber(s.shading.diffuseConeAperture)
-             << ", \"step\": " << jsonNumber(s.shading.coneStep)
-             << ", \"anisotropic\": " << (s.resources.anisotropicVoxels ? "true" : "false")
-             << ", \"bounces\": " << jsonString(bouncesText(s.resources.bounces))
-             << ", \"supersample\": " << s.image.supersample
-             << ", \"diffuse_resolution\": " << jsonString(diffuseResolutionName(s.image.diffuseDownscale))
-             << ", \"sun_shadow_map\": " << s.resources.sunShadowMapSize
-             << ", \"visibility\": " << jsonString(s.resources.rayVisibility ? "rays" : "mips")
-             << ", \"cone_turns\": " << s.shading.diffuseConeTurns
-             << "},\n     \"static\": " << jsonTiming(m.staticFrame) << ", \"settle_frames\": " << m.settleFrames
-             << ", \"settle_ms\": " << jsonNumber(m.settleMilliseconds)
+             << ",\n     \"settings\": " << jsonSettings(s) << ",\n     \"static\": " << jsonTiming(m.staticFrame)
+             << ", \"settle_frames\": " << m.settleFrames << ", \"settle_ms\": " << jsonNumber(m.settleMilliseconds)
              << ",\n     \"light_change\": " << jsonTiming(m.lightChangeFrame)
              << (m.lightMovingFrame ? ",\n     \"light_moving\": " + jsonTiming(*m.lightMovingFrame) +
                                           ", \"bounce_slices\": " + std::to_string(m.bounceSlices)

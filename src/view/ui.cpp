@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
 #include <vector>
 
 #include "render/presets.h"
+#include "render/setting_table.h"
 #include "scene/load.h"
 #include "view/scene_panel.h"
 
@@ -46,17 +48,68 @@ float FrameHistory::averageFrameMilliseconds() const {
     return sum / float(count);
 }
 
-// A power-of-two choice shown as a combo box ("64", "128", ...).
-static void powerOfTwoCombo(const char* label, uint32_t& value, uint32_t smallest, uint32_t largest) {
-    char current[16];
-    std::snprintf(current, sizeof current, "%u", value);
-    if (!ImGui::BeginCombo(label, current)) return;
-    for (uint32_t option = smallest; option <= largest; option *= 2) {
-        char text[16];
-        std::snprintf(text, sizeof text, "%u", option);
-        if (ImGui::Selectable(text, option == value)) value = option;
-    }
+// A combo box over `count` values: `text(i)` names the i-th, `chosen` is the index chosen (or
+// -1); returns the index picked this frame, or -1.
+template <typename Text>
+static int comboOf(const char* label, const std::string& current, int count, int chosen, Text text) {
+    int picked = -1;
+    if (!ImGui::BeginCombo(label, current.c_str())) return picked;
+    for (int i = 0; i < count; ++i)
+        if (ImGui::Selectable(text(i).c_str(), i == chosen)) picked = i;
     ImGui::EndCombo();
+    return picked;
+}
+
+// One setting's widget, as its row says (src/render/setting_table.h): the same range and names as
+// its command-line option. A hover shows the option's help.
+static void settingWidget(const SettingRow& row, RenderSettings& settings) {
+    if (!row.label || row.widget == SettingWidget::None) return;
+    const double value = row.get(settings);
+    double edited = value;
+    const std::string current = settingText(row, value);
+    switch (row.widget) {
+        case SettingWidget::None: break;
+        case SettingWidget::Choice: {
+            int chosen = -1;
+            for (size_t i = 0; i < row.names.size(); ++i)
+                if (row.names[i].value == value) chosen = int(i);
+            const int picked = comboOf(row.label, current, int(row.names.size()), chosen,
+                                       [&](int i) { return std::string(row.names[size_t(i)].name); });
+            if (picked >= 0) edited = row.names[size_t(picked)].value;
+            break;
+        }
+        case SettingWidget::PowerOfTwo: {
+            const int count = int(std::log2(row.max / row.min)) + 1;
+            auto power = [&](int i) { return row.min * std::exp2(double(i)); };
+            const int picked = comboOf(row.label, current, count, int(std::log2(value / row.min)),
+                                       [&](int i) { return settingText(row, power(i)); });
+            if (picked >= 0) edited = power(picked);
+            break;
+        }
+        case SettingWidget::Slider:
+            if (row.whole) {
+                // A named value below the range (0 bounces: converged) is the slider's first stop.
+                int lowest = int(row.min);
+                for (const NamedValue& named : row.names) lowest = std::min(lowest, int(named.value));
+                int whole = int(value);
+                const NamedValue* named = namedValue(row, value);
+                if (ImGui::SliderInt(row.label, &whole, lowest, int(row.max), named ? named->name : row.format))
+                    edited = std::clamp(whole, lowest, int(row.max));
+            } else {
+                float number = float(value);
+                if (ImGui::SliderFloat(row.label, &number, float(row.min), float(row.max), row.format))
+                    edited = std::clamp(double(number), row.min, row.max);
+            }
+            break;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("--%s: %s", row.option, row.help);
+    if (edited != value) row.set(settings, edited);
+}
+
+// Every setting of `group`, in the table's order.
+static void settingWidgets(SettingGroup group, RenderSettings& settings) {
+    for (const SettingRow& row : settingTable())
+        if (row.group == group) settingWidget(row, settings);
 }
 
 // Text in the disabled colour, wrapped at the window's edge instead of cut there.
@@ -128,9 +181,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
     int curve = int(state.toneCurve);
     ImGui::Combo("tone curve", &curve, "PBR Neutral\0ACES\0");
     state.toneCurve = ToneCurve(curve);
-    int mode = int(settings.shading.mode);
-    ImGui::Combo("mode (M)", &mode, "full\0direct\0indirect\0");
-    settings.shading.mode = RenderMode(mode);
+    settingWidget(settingRow("mode"), settings);
     // Two columns, each component labelled with its key (1…8, in the table's order).
     for (size_t i = 0; i < componentTable().size(); ++i) {
         const ComponentInfo& component = componentTable()[i];
@@ -138,7 +189,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
         const std::string label = std::to_string(i + 1) + " " + component.label;
         ImGui::Checkbox(label.c_str(), &(settings.shading.components.*component.member));
     }
-    ImGui::SliderFloat("ambient", &settings.shading.ambientFactor, 0.0f, 1.0f, "%.3f");
+    settingWidget(settingRow("ambient"), settings);
     int view = int(settings.shading.debugView);
     ImGui::Combo(
         "view (V)", &view,
@@ -156,20 +207,7 @@ static void shadingSection(ViewerState& state, const UiFacts& facts) {
 
 static void coneSection(RenderSettings& settings) {
     if (!ImGui::CollapsingHeader("Cones")) return;
-    int cones = int(settings.shading.diffuseConeCount);
-    ImGui::SliderInt("diffuse cones", &cones, 1, 16);
-    settings.shading.diffuseConeCount = uint32_t(cones);
-    ImGui::SliderFloat("aperture", &settings.shading.diffuseConeAperture, 5.0f, 120.0f, "%.0f deg");
-    ImGui::SliderFloat("centre weight", &settings.shading.diffuseCentreWeight, 0.0f, 1.0f);
-    // The ring turned over still frames and averaged: more directions once the view is still.
-    int turns = int(settings.shading.diffuseConeTurns);
-    ImGui::SliderInt("ring turns", &turns, 1, 16);
-    settings.shading.diffuseConeTurns = uint32_t(std::max(turns, 1));
-    ImGui::SliderFloat("step", &settings.shading.coneStep, 0.1f, 2.0f, "%.2f diameters");
-    ImGui::SliderFloat("max distance", &settings.shading.coneMaxDistance, 0.05f, 1.5f, "%.2f grid");
-    ImGui::SliderFloat("start offset", &settings.shading.coneStartOffset, 0.0f, 4.0f, "%.2f voxels");
-    ImGui::SliderFloat("stop opacity", &settings.shading.coneStopOpacity, 0.5f, 1.0f);
-    ImGui::SliderFloat("AO falloff", &settings.shading.aoFalloff, 0.0f, 32.0f);
+    settingWidgets(SettingGroup::Cones, settings);
     bool skipEmptySpace = settings.shading.skipEmptySpace.value_or(true);  // the viewer resolves it at start
     if (ImGui::Checkbox("skip empty space", &skipEmptySpace)) settings.shading.skipEmptySpace = skipEmptySpace;
 }
@@ -184,19 +222,9 @@ static void resolutionSection(ViewerState& state) {
                  "1/2\0"
                  "1/4\0");
     state.renderScale = scale == 0 ? 1.0f : scale == 1 ? 0.5f : 0.25f;
-    powerOfTwoCombo("voxels", settings.resources.voxelResolution, 32, 512);
-    powerOfTwoCombo("sun shadow map", settings.resources.sunShadowMapSize, 256, 8192);
-    powerOfTwoCombo("local shadow map", settings.resources.localShadowMapSize, 128, 4096);
-    powerOfTwoCombo("area shadow map", settings.resources.areaShadowMapSize, 128, 4096);
-    int supersample = int(settings.image.supersample);
-    ImGui::SliderInt("supersample", &supersample, 1, 4);
-    settings.image.supersample = uint32_t(supersample);
-    ImGui::Checkbox("anisotropic voxels", &settings.resources.anisotropicVoxels);
-    ImGui::Checkbox("ray visibility", &settings.resources.rayVisibility);
-    // 0 = converged (one bounce per frame until the light settles), else that many bounces.
-    int bounces = int(settings.resources.bounces);
-    ImGui::SliderInt("bounces", &bounces, 0, 8, bounces == 0 ? "converged" : "%d");
-    settings.resources.bounces = uint32_t(std::clamp(bounces, 0, 8));
+    settingWidgets(SettingGroup::Voxels, settings);
+    settingWidgets(SettingGroup::Shadows, settings);
+    settingWidgets(SettingGroup::Image, settings);
 }
 
 // One row: the preset last chosen; choosing one brings its quality settings.
