@@ -48,7 +48,7 @@ std::string componentOptionNames() {
 
 // A setting's row as an option: its help says what it takes unless its shape lists it.
 Option settingOption(const SettingRow& row) {
-    const std::string domain = row.namesOnly() ? "" : "; " + settingDomain(row);
+    const std::string domain = row.namesOnly ? "" : "; " + settingDomain(row);
     return {
         row.option, row.shape, row.help + domain,
         [&row](const OptionValue& value, RenderSettings& settings) {

@@ -39,27 +39,28 @@ struct SettingAccess {
     void (*set)(RenderSettings&, double);
 };
 
+// Written with designated initializers: a row names what it sets and leaves the rest at these.
 struct SettingRow {
     const char* option;  // --option
     const char* shape;   // the value in the help: "N", "DEGREES", "full|half|quarter"
     const char* help;
     SettingGroup group;
-    const char* label;  // in the viewer
-    SettingWidget widget;
-    const char* format;  // the viewer's slider format, "%.0f deg"; "%d" for whole numbers
-    double min, max;     // the numbers it takes, besides its names; min > max: names only
-    bool whole;          // whole numbers only
-    bool powerOfTwo;     // powers of two only
-    std::vector<NamedValue> names;
-    const char* benchKey;  // the bench's CSV column and JSON key; nullptr: not recorded
-    const char* labelTag;  // the bench's label: "v" makes "v64"
-    bool alwaysInLabel;    // in every label; the others where they differ from the bench's base
-    const char* legend;    // the label explained: "v64 = 64³ voxels"
     SettingAccess access;
+    const char* label = nullptr;  // in the viewer; nullptr: command line only
+    SettingWidget widget = SettingWidget::Slider;
+    const char* format = "%.2f";  // the viewer's slider format, "%.0f deg"; "%d" for whole numbers
+    double min = 0.0, max = 0.0;  // the numbers it takes, besides its names
+    bool whole = false;           // whole numbers only
+    bool powerOfTwo = false;      // powers of two only
+    std::vector<NamedValue> names = {};
+    bool namesOnly = false;          // no numbers: one of `names`
+    const char* benchKey = nullptr;  // the bench's CSV column and JSON key; nullptr: not recorded
+    const char* labelTag = "";       // the bench's label: "v" makes "v64"
+    bool alwaysInLabel = false;      // in every label; the others where they differ from the bench's base
+    const char* legend = nullptr;    // the label explained: "v64 = 64³ voxels"
 
     double get(const RenderSettings& settings) const { return access.get(settings); }
     void set(RenderSettings& settings, double value) const { access.set(settings, value); }
-    bool namesOnly() const { return min > max; }
 };
 
 // Every row, in the order the help and the README list them.

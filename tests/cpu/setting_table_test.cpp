@@ -73,7 +73,7 @@ TEST(SettingTable, TwoSettingsTheBenchRecordsApartGetTwoLabels) {
         RenderSettings changed = base;
         const double value = row.get(base);
         const double other = !row.names.empty() && row.names.front().value != value ? row.names.front().value
-                             : row.namesOnly()                                      ? row.names.back().value
+                             : row.namesOnly                                        ? row.names.back().value
                              : value != row.max                                     ? row.max
                                                                                     : row.min;
         row.set(changed, other);
