@@ -389,10 +389,10 @@ vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
 // tan²θh / (α² + tan²θh) of its projected area within θh of the normal, half at θh = atan α, and
 // the reflection doubles the angle: tan(half-aperture) = tan 2θh = 2α / (1 − α²). Its half-width at
 // half maximum (tan ≈ 1.3·α) was narrower, and the long tail it left out blurs the truth's
-// reflections: cornell-metal's full relMSE 0.0506 with it, 0.0488 with this.
-const float MAX_SPECULAR_CONE_TAN = 1.0f;  // a 90° cone: wider lobes are traced as wide as this
+// reflections: cornell-metal's full relMSE 0.0506 with it, 0.0488 with this. Wider lobes are traced
+// as wide as the widest cone (frame.specularConeMaxTan, 90° by default).
 float specularConeTanHalfAperture(float alpha) {
-    return clamp(2.0f * alpha / max(1.0f - alpha * alpha, 1e-4f), 0.02f, MAX_SPECULAR_CONE_TAN);
+    return clamp(2.0f * alpha / max(1.0f - alpha * alpha, 1e-4f), 0.02f, frame.specularConeMaxTan);
 }
 
 // Directional albedo of the GGX lobe, (A, B) with ∫f·cosθ = F0·A + B (Karis 2014, after Lazarov 2013).

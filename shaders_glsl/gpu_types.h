@@ -122,6 +122,8 @@ struct FrameConstants {
     uint firstAreaLight;  // lights[firstAreaLight, lightCount) are the area lights, after the punctual ones
     vec4 environment;  // rgb: the sky's radiance (Scene::environment), seen by cones that leave the grid;
                        // w = 1: an environment image is bound, and rgb multiplies it (sky.glsl)
+    float specularConeMaxTan;  // tan(half-aperture) of the widest specular cone
+    float unused0, unused1, unused2;  // std140 rounds the block to 16 bytes: room for the next settings
 };
 
 // What the shading pass shows instead of light (FrameConstants.debugView), for understanding.

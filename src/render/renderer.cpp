@@ -224,6 +224,7 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.coneStopOpacity = shading.coneStopOpacity;
     constants.diffuseCentreWeight = shading.diffuseCentreWeight;
     constants.diffuseConeCount = shading.diffuseConeCount;
+    constants.specularConeMaxTan = float(std::tan(glm::radians(0.5 * double(shading.specularMaxAperture))));
     const uint32_t turns = stillFramesAveraged(shading);
     constants.diffuseRingTurn = float(ringTurn_ % turns) / float(turns);
     constants.debugVoxelMip = shading.debugVoxelMip;

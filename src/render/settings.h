@@ -130,6 +130,7 @@ struct ShadingSettings {
     float coneStartOffset = 1.5f;       // surface to cone apex, in voxels of a 64³ grid (and at least of this one)
     float coneStopOpacity = 0.95f;      // a cone stops once this opaque
     float aoFalloff = 8.0f;             // occlusion at distance d weighs 1 / (1 + aoFalloff · d / grid side)
+    float specularMaxAperture = 90.0f;  // the widest specular cone, degrees; a rougher lobe takes the diffuse light
     // The screen's ring of diffuse cones turned this many times about the normal, by equal shares
     // of the spacing between its cones, one still frame each, and those frames averaged
     // (Renderer::settling): more directions from the same cones a frame. With ray visibility the

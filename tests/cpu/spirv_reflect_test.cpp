@@ -353,6 +353,10 @@ TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
                          MEMBER(FrameConstants, diffuseDownscale),
                          MEMBER(FrameConstants, firstAreaLight),
                          MEMBER(FrameConstants, environment),
+                         MEMBER(FrameConstants, specularConeMaxTan),
+                         MEMBER(FrameConstants, unused0),
+                         MEMBER(FrameConstants, unused1),
+                         MEMBER(FrameConstants, unused2),
                      });
     expectSameLayout(shade, "VoxelGridParams",
                      {
