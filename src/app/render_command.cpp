@@ -75,7 +75,8 @@ int runRender(const std::vector<std::string>& rawArguments) {
     for (uint32_t frame = 0; frame < frames; ++frame) {
         progress.setStage(frames == 1 ? std::string("rendering")
                                       : "frame " + std::to_string(frame + 1) + " of " + std::to_string(frames));
-        // The last frame waits for the image to settle, as a still viewer's does.
+        // The last frame waits for the image to settle, as a still viewer's does: its passes are
+        // listed, the frames after it (still samples, turns, settling light) counted.
         stats = frame + 1 < frames ? renderer.renderFrame() : renderer.renderSettled();
     }
     progress.setStage("writing " + outPath);
@@ -90,8 +91,11 @@ int runRender(const std::vector<std::string>& rawArguments) {
     if (stats.bounces > 0)
         std::printf("  light: %u bounce%s over %u occupied voxels, %s\n", stats.bounces, stats.bounces == 1 ? "" : "s",
                     stats.occupiedVoxels, stats.bouncesConverged ? "converged" : "not converged yet");
+    if (stats.settleFrames > 0)
+        std::printf("  then %u frame%s until the image settled, %.3f ms GPU together\n", stats.settleFrames,
+                    stats.settleFrames == 1 ? "" : "s", stats.settleGpuMilliseconds);
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("wrote %s (%ux%u, %s) in %.2f s; last frame %.3f ms GPU\n", outPath.c_str(), image.width, image.height,
+    std::printf("wrote %s (%ux%u, %s) in %.2f s; frame %.3f ms GPU\n", outPath.c_str(), image.width, image.height,
                 renderModeName(settings.shading.mode), total, stats.gpuMilliseconds());
     if (!endsWithIgnoringCase(outPath, ".pfm"))
         std::printf("  exposure %+.2f EV (%s), %s tone curve\n", std::log2(display.exposure),

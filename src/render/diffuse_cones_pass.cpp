@@ -78,7 +78,7 @@ DiffuseConesPass::DiffuseConesPass(GpuContext& context, uint32_t samplesWide, ui
 
 void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
                               const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection,
-                              bool skipEmptySpace) {
+                              bool cameraStill, bool skipEmptySpace) {
     const VkSampler volumeSampler = volumes.sampler.sampler, point = pointSampler.sampler;
     const Reduced& now = reduced[frameCount_ % 2];
     const Reduced& last = reduced[(frameCount_ + 1) % 2];
@@ -214,7 +214,7 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     copyForHost(commands, fallbackList.buffer, listHeaders.buffer, {{0, header, header}});
 
     if (!haveHistory_) stillFrames_ = kRefreshPeriod;  // every block traced: settled at once
-    else if (viewProjection != lastViewProjection_) stillFrames_ = 0;
+    else if (!cameraStill) stillFrames_ = 0;
     else ++stillFrames_;
     haveHistory_ = true;
     lastViewProjection_ = viewProjection;

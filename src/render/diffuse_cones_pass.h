@@ -23,8 +23,11 @@ struct DiffuseConesPass {
 
     // Leaves diffuse() in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
     // `viewProjection` is the G-buffer's: the next frame finds this frame's light through it.
+    // `cameraStill`: the camera did not move since the last frame, though the samples may have
+    // (ShadingSettings::stillSamples): the reused light still counts towards settled().
     void record(VkCommandBuffer commands, VkBuffer frameConstants, const GBufferPass& gbuffer,
-                const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection, bool skipEmptySpace);
+                const VoxelVolumes& volumes, const SkyImage& sky, const glm::mat4& viewProjection, bool cameraStill,
+                bool skipEmptySpace);
     // The light the last frames gathered no longer holds (the voxels' light was recomputed, or the
     // cones changed): the next frame traces every block.
     void forgetHistory() { haveHistory_ = false; }

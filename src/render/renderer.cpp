@@ -6,6 +6,8 @@
 #include <cstring>
 #include <functional>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gpu/commands.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
@@ -187,13 +189,29 @@ uint32_t Renderer::voxelLightFlags(const ShadingSettings& shading) {
     return componentFlags(effectiveComponents(shading)) & glsl::VOXEL_LIGHT_FLAGS;
 }
 
-glm::mat4 Renderer::writeFrameConstants() {
-    const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
-    glsl::FrameConstants constants{};
+glm::mat4 Renderer::cameraViewProjection() const {
     Camera local = camera_;
     local.position -= facts_.origin;
-    constants.viewProjection = cameraMatrices(local, float(width) / float(height), facts_.bounds).viewProjection;
+    const float aspect = float(gbufferPass_->width) / float(gbufferPass_->height);
+    return cameraMatrices(local, aspect, facts_.bounds).viewProjection;
+}
+
+glm::mat4 Renderer::writeFrameConstants(const glm::mat4& cameraViewProjection) {
+    const uint32_t width = gbufferPass_->width, height = gbufferPass_->height;
+    glsl::FrameConstants constants{};
+    constants.viewProjection = cameraViewProjection;
+    // This still frame's samples moved within their squares (stillSampleOffset): a shift of the
+    // clip space by the offset's share of the image, 2/width per sample. Once the mean is complete
+    // the last frame's offset stays, so a still view draws nothing anew.
+    const uint32_t stillFrame = std::min(framesAveraged_, stillFramesAveraged(settings_.shading) - 1);
+    const glm::vec2 offset = stillSampleOffset(settings_.shading, stillFrame);
+    if (offset != glm::vec2(0.0f))
+        constants.viewProjection = glm::translate(glm::mat4(1.0f), glm::vec3(2.0f * offset.x / float(width),
+                                                                             2.0f * offset.y / float(height), 0.0f)) *
+                                   cameraViewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
+    Camera local = camera_;
+    local.position -= facts_.origin;
     constants.cameraPosition = local.position;
     constants.lightCount = uint32_t(lightTable_.layout().lights.size());
     constants.firstAreaLight = lightTable_.layout().firstAreaLight;
@@ -225,7 +243,7 @@ glm::mat4 Renderer::writeFrameConstants() {
     constants.diffuseCentreWeight = shading.diffuseCentreWeight;
     constants.diffuseConeCount = shading.diffuseConeCount;
     constants.specularConeMaxTan = float(std::tan(glm::radians(0.5 * double(shading.specularMaxAperture))));
-    const uint32_t turns = stillFramesAveraged(shading);
+    const uint32_t turns = diffuseRingTurns(shading);
     constants.diffuseRingTurn = float(ringTurn_ % turns) / float(turns);
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
@@ -238,15 +256,23 @@ glm::mat4 Renderer::writeFrameConstants() {
 FrameStats Renderer::renderFrame() {
     const auto start = std::chrono::steady_clock::now();
     FrameStats stats;
-    const glm::mat4 viewProjection = writeFrameConstants();
     // The G-buffer holds the view alone: a frame whose camera did not move (a light steered, the
     // light settling) shades the last one's again.
-    if (viewProjection != gbufferViewProjection_) stale_.view = true;
-    gbufferViewProjection_ = viewProjection;
+    const glm::mat4 camera = cameraViewProjection();
+    if (camera != cameraViewProjection_) stale_.view = true;
+    cameraViewProjection_ = camera;
     stats.plan = planFrame(stale_, settings_);
-    const FramePlan& plan = stats.plan;
     // A new view, light or geometry: the still frames' mean starts anew (new shading, in setShading).
-    if (plan.runs(Pass::GBuffer) || plan.runs(Pass::Inject) || plan.runs(Pass::Shadow)) framesAveraged_ = 0;
+    if (stale_.view || stats.plan.runs(Pass::Inject) || stats.plan.runs(Pass::Shadow)) framesAveraged_ = 0;
+    // A still frame whose samples moved draws the G-buffer anew, in the same mean.
+    const bool cameraStill = !stale_.view;
+    const glm::mat4 viewProjection = writeFrameConstants(camera);
+    if (viewProjection != gbufferViewProjection_ && !stale_.view) {
+        stale_.view = true;
+        stats.plan = planFrame(stale_, settings_);
+    }
+    gbufferViewProjection_ = viewProjection;
+    const FramePlan& plan = stats.plan;
     const bool converging = settings_.resources.bounces == kConvergedBounces;
     const bool progressive = bouncesProgressively(settings_);
     // Each submission's passes are timed; a pass that runs in several (bounces) adds up.
@@ -349,7 +375,7 @@ FrameStats Renderer::renderFrame() {
         run(commands, Pass::GBuffer, [&] { gbufferPass_->record(commands, *sceneGpu_, frameConstants_.buffer); });
         run(commands, Pass::DiffuseCones, [&] {
             diffuseConesPass_->record(commands, frameConstants_.buffer, *gbufferPass_, *volumes_, *sky_, viewProjection,
-                                      skipsEmptySpace());
+                                      cameraStill, skipsEmptySpace());
         });
         run(commands, Pass::Shade, [&] {
             const bool reducedDiffuse = plan.runs(Pass::DiffuseCones);
@@ -394,14 +420,17 @@ FrameStats Renderer::renderFrame() {
 }
 
 float Renderer::averageStillFrame(bool settled) {
-    const uint32_t turns = stillFramesAveraged(settings_.shading);
-    if (!settled || turns == 1) {
+    const uint32_t frames = stillFramesAveraged(settings_.shading);
+    if (!settled || frames == 1) {
         framesAveraged_ = 0;
         return 1.0f;
     }
     ++framesAveraged_;
-    if (framesAveraged_ < turns) {
-        // The next frame traces the ring turned on, at every sample: the reused light is another turn's.
+    // The ring turns once each of its turns has had its share of the still frames (every frame
+    // without still samples), and the next frame traces it at every sample: the reused light is
+    // another turn's. Between turns only the samples move, and the reduced cones' light is reused.
+    const uint32_t turns = diffuseRingTurns(settings_.shading);
+    if (framesAveraged_ < frames && framesAveraged_ % (frames / turns) == 0) {
         ringTurn_ = (ringTurn_ + 1) % turns;
         if (diffuseConesPass_) diffuseConesPass_->forgetHistory();
     }
@@ -410,7 +439,8 @@ float Renderer::averageStillFrame(bool settled) {
 
 FrameStats Renderer::renderSettled(uint32_t maxFrames) {
     FrameStats stats = renderFrame();
-    for (uint32_t frame = 1; frame < maxFrames && settling(); ++frame) stats = renderFrame();
+    for (; stats.settleFrames + 1 < maxFrames && settling(); ++stats.settleFrames)
+        stats.settleGpuMilliseconds += renderFrame().gpuMilliseconds();
     return stats;
 }
 

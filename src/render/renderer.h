@@ -47,6 +47,10 @@ struct FrameStats {
     // reused the last frame's light), and samples that traced their own.
     uint32_t diffuseBlocksTraced = 0;
     uint32_t diffuseSamplesTraced = 0;
+    // Renderer::renderSettled: the frames it rendered after this one until the image settled, and
+    // their GPU time together.
+    uint32_t settleFrames = 0;
+    double settleGpuMilliseconds = 0.0;
 
     double gpuMilliseconds() const;
     bool ran(const std::string& pass) const;
@@ -90,9 +94,9 @@ public:
     // Records, submits and waits for one frame.
     FrameStats renderFrame();
     // Progressive bounces have not converged yet, the reduced diffuse cones' reused light has not
-    // all been traced anew since the view or the light changed, or the still frames whose cones
-    // turned (ShadingSettings::diffuseConeTurns) are not all in the image's mean: the next frame
-    // changes the image even if nothing else does.
+    // all been traced anew since the view or the light changed, or the still frames (whose cones
+    // turned, ShadingSettings::diffuseConeTurns, and whose samples moved, stillSamples) are not all
+    // in the image's mean: the next frame changes the image even if nothing else does.
     bool settling() const {
         return stale_.bounces || diffuseReuseSettling_ ||
                (stillFramesAveraged(settings_.shading) > 1 && !stillMeanComplete());
@@ -100,7 +104,8 @@ public:
     // Frames renderSettled() and `vct bench` wait at most for the image to settle.
     static constexpr uint32_t kMaxSettleFrames = 64;
     // Renders frames until the image settles (at most `maxFrames`): the image a still viewer
-    // converges to, as `vct render` and `vct bench` show it. Returns the last frame's stats.
+    // converges to, as `vct render` and `vct bench` show it. Returns the first frame's stats, with
+    // the frames after it counted in settleFrames.
     FrameStats renderSettled(uint32_t maxFrames = kMaxSettleFrames);
     // The last frame's image: linear radiance, width × height, top row first.
     Image readImage();
@@ -132,7 +137,9 @@ private:
     // and scaled as the sky is now.
     std::vector<Light> withEnvironmentSun(const std::vector<Light>& lights) const;
 
-    glm::mat4 writeFrameConstants();  // returns the camera's view-projection it wrote
+    glm::mat4 cameraViewProjection() const;  // the camera's, as the G-buffer's size shapes it
+    // Returns the view-projection it wrote: the camera's, with this still frame's samples moved.
+    glm::mat4 writeFrameConstants(const glm::mat4& cameraViewProjection);
     // The components the voxels' light depends on (glsl::VOXEL_LIGHT_FLAGS) as `shading` shows them.
     static uint32_t voxelLightFlags(const ShadingSettings& shading);
     // The shading settings' empty-space skipping, or the device's default (settings.h).
@@ -150,7 +157,8 @@ private:
     float environmentRotation_ = 0.0f;  // Scene::environmentRotation
     std::unique_ptr<SkyImage> sky_;     // Scene::environmentMap without its sun, or the placeholder
     StaleInputs stale_;
-    glm::mat4 gbufferViewProjection_{0.0f};                // the last frame's camera
+    glm::mat4 cameraViewProjection_{0.0f};                 // the last frame's camera
+    glm::mat4 gbufferViewProjection_{0.0f};                // ... with its samples moved, as the G-buffer holds it
     ShadowArraySet staleShadowArrays_ = kAllShadowArrays;  // shadow arrays to redraw at the next shadow pass
     float radianceScale_ = 1.0f;
     glsl::VoxelGridParams grid_;

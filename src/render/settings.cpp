@@ -1,6 +1,7 @@
 #include "render/settings.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace vct {
 
@@ -84,9 +85,33 @@ bool needsDiffuseCones(const ShadingSettings& shading) {
            (shown.indirectDiffuse || (shown.ambientOcclusion && shading.ambientFactor > 0.0f));
 }
 
-uint32_t stillFramesAveraged(const ShadingSettings& shading) {
+uint32_t diffuseRingTurns(const ShadingSettings& shading) {
     const bool ring = needsDiffuseCones(shading) && shading.diffuseConeCount > 1;
     return ring ? std::max(shading.diffuseConeTurns, 1u) : 1u;
+}
+
+uint32_t stillFramesAveraged(const ShadingSettings& shading) {
+    return std::lcm(diffuseRingTurns(shading), std::max(shading.stillSamples, 1u));
+}
+
+namespace {
+
+// The radical inverse of `index` in base 2 (van der Corput), in [0, 1).
+float radicalInverse2(uint32_t index) {
+    float inverse = 0.0f, digit = 0.5f;
+    for (; index > 0; index /= 2, digit *= 0.5f) inverse += float(index % 2) * digit;
+    return inverse;
+}
+
+}  // namespace
+
+glm::vec2 stillSampleOffset(const ShadingSettings& shading, uint32_t frame) {
+    const uint32_t count = std::max(shading.stillSamples, 1u), index = frame % count;
+    // The Hammersley set (i / n, van der Corput of i): for a power of two, one point in each of the
+    // pixel's n elementary rectangles (a 4×4 grid's cells for 16); shifted by half a sample, modulo
+    // the sample, so that the first point is its centre.
+    auto centred = [](float u) { return u < 0.5f ? u : u - 1.0f; };
+    return {centred(float(index) / float(count)), centred(radicalInverse2(index))};
 }
 
 bool resolvesImage(const RenderSettings& settings) {

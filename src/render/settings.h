@@ -136,6 +136,12 @@ struct ShadingSettings {
     // (Renderer::settling): more directions from the same cones a frame. With ray visibility the
     // cones see sharply, and six fixed directions drew a small sunlit patch as streaks. 1: fixed.
     uint32_t diffuseConeTurns = 1;
+    // Samples per pixel gathered over still frames: each still frame moves the image's samples
+    // within their pixel (a Hammersley set whose first point is the centre, so a moving view shows
+    // the unmoved image) and the frames are averaged with the ring's turns. The pixel then
+    // averages its square as `supersample` does, at no cost per frame: small bright emitters seen
+    // directly (the tile room's lamps) alias at one sample. 1: the samples stay put.
+    uint32_t stillSamples = 1;
     // March through empty space with the coarse mips. Unset: on, except on a software rasterizer,
     // which runs both sides of the test at every step and measured each cone 25 % faster without it.
     std::optional<bool> skipEmptySpace;
@@ -193,9 +199,14 @@ inline uint32_t progressiveSlices(const RenderSettings& settings, uint32_t occup
 bool needsVoxels(const ShadingSettings& shading);
 // Whether the lit image traces diffuse cones (indirect diffuse light, or AO for the ambient term).
 bool needsDiffuseCones(const ShadingSettings& shading);
-// The still frames the image averages: ShadingSettings::diffuseConeTurns where the image shows a
-// ring of diffuse cones (1 otherwise: every frame would be the same image).
+// The turns of the diffuse ring the still frames trace: ShadingSettings::diffuseConeTurns where the
+// image shows a ring of diffuse cones (1 otherwise: every turn would be the same image).
+uint32_t diffuseRingTurns(const ShadingSettings& shading);
+// The still frames the image averages: every turn of the ring with every still sample, the least
+// common multiple of the two counts (1: the image is each frame's own).
 uint32_t stillFramesAveraged(const ShadingSettings& shading);
+// The offset of still frame `frame`'s samples from their centres, in samples (each in [−½, ½)).
+glm::vec2 stillSampleOffset(const ShadingSettings& shading, uint32_t frame);
 // Whether the frame ends with the resolve pass: supersamples to average, or still frames.
 bool resolvesImage(const RenderSettings& settings);
 

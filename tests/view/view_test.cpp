@@ -97,10 +97,11 @@ protected:
         fs::create_directories(directory);
     }
 
-    // Runs `vct view` in `directory` (which is its XDG_CONFIG_HOME too: the recent files go there) on a small window with 64³ voxels and one bounce (so that a
-    // frame changes only what the script changed: converging bounces brighten the first frames,
-    // which View.ProgressiveBouncesSettleAndThenTheImageStays checks), each frame's passes logged
-    // (--verbose); returns the exit code.
+    // Runs `vct view` in `directory` (which is its XDG_CONFIG_HOME too: the recent files go there) on a small window with 64³ voxels, one bounce and one
+    // sample a pixel (so that a frame changes only what the script changed: converging bounces
+    // brighten the first frames, which View.ProgressiveBouncesSettleAndThenTheImageStays checks, and
+    // still samples move the image's samples, View.AStillViewGathersItsSamplesThenIdles), each
+    // frame's passes logged (--verbose); returns the exit code.
     // `hint`: start with the status bar's one-line hint to the guide, as a user does (the tests
     // otherwise pass --no-guide, so that screenshots with the panels show only what they test).
     // `autoExposure`: as a user starts it; the tests otherwise fix the exposure (--exposure 0, the
@@ -114,7 +115,7 @@ protected:
         fs::remove(exitCodePath);
         std::ofstream(directory / "run-viewer.sh")
             << VCT_EXECUTABLE " view --validate " << (autoExposure ? "" : "--verbose ") << (hint ? "" : "--no-guide ")
-            << "--voxels 64 --shadow-map 512 --bounces 1 --width 320 --height 180 "
+            << "--voxels 64 --shadow-map 512 --bounces 1 --still-samples 1 --width 320 --height 180 "
             << (autoExposure ? "" : "--exposure 0 ") << arguments << " > '" << logPath.string() << "' 2>&1\n"
             << "echo $? > '" << exitCodePath.string() << "'\n";
         const std::string command = "cd '" + directory.string() + "' && XDG_RUNTIME_DIR=/tmp XDG_CONFIG_HOME='" +
@@ -205,6 +206,16 @@ TEST_F(View, ASoftwareRasterizerStartsOnTheFastPresetUnlessOneIsGiven) {
     EXPECT_EQ(log.find("started on the fast preset") != std::string::npos, software) << log;
     ASSERT_EQ(runViewer("--preset balanced --screenshot shot.png --frames 1"), 0) << log;
     EXPECT_EQ(log.find("started on the fast preset"), std::string::npos) << log;
+}
+
+TEST_F(View, AStillViewGathersItsSamplesThenIdles) {
+    // Sixteen samples a pixel over still frames: after the first frame, fifteen redraw the
+    // G-buffer with the samples moved and add them to the mean; then nothing runs.
+    ASSERT_EQ(runViewer("--still-samples 16 --screenshot still.png --frames 30"), 0) << log;
+    EXPECT_NE(log.find("frame 1: ran gbuffer diffuse-cones shade resolve;"), std::string::npos) << log;
+    EXPECT_NE(log.find("frame 15: ran gbuffer diffuse-cones shade resolve;"), std::string::npos) << log;
+    EXPECT_EQ(log.find("frame 16: ran"), std::string::npos) << log;
+    EXPECT_EQ(log.find("frame 29: ran"), std::string::npos) << log;
 }
 
 TEST_F(View, MovingTheSunReinjectsLightWithoutRevoxelizing) {
