@@ -9,7 +9,11 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     // are traced; with one cone the wide one is better. 128³ voxels measured no better than 64³ at
     // 128×128. Diffuse cones at a quarter resolution (one trace per 4×4 samples, upsampled along
     // the surfaces) cost a fraction and measured no worse than tracing every sample: what they
-    // smooth away is mostly the voxels' own pattern.
+    // smooth away is mostly the voxels' own pattern. Every preset but `classic` averages 16 samples a
+    // pixel over still frames (ShadingSettings::stillSamples): a frame costs what one sample does,
+    // and a still image is the pixels' average that the path tracer's is (walls 0.035 -> 0.021 full
+    // relMSE over the scenes, the tile room's seen lamps 0.094 -> 0.018; docs/experiments.md).
+    constexpr uint32_t kStillSamples = 16;
 
     // Six 60° cones at 32³ stepping a whole diameter: the viewer's start on a software rasterizer (a
     // 960×540 window moving through the Cornell box at render scale 0.5: 65 ms a frame on lavapipe,
@@ -18,7 +22,10 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     const RenderSettings fast{
         .image = {.supersample = 1, .diffuseDownscale = 4},
         .resources = {.voxelResolution = 32, .sunShadowMapSize = 2048},
-        .shading = {.diffuseConeCount = 6, .diffuseConeAperture = 60.0f, .coneStep = 1.0f},
+        .shading = {.diffuseConeCount = 6,
+                    .diffuseConeAperture = 60.0f,
+                    .coneStep = 1.0f,
+                    .stillSamples = kStillSamples},
     };
 
     // 6 cones of 40° at 64³, with a 2048² sun shadow map: at 128×128 it measured as accurate as
@@ -28,16 +35,22 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     const RenderSettings balanced{
         .image = {.supersample = 1, .diffuseDownscale = 4},
         .resources = {.voxelResolution = 64, .sunShadowMapSize = 2048},
-        .shading = {.diffuseConeCount = 6, .diffuseConeAperture = 40.0f, .coneStep = 0.5f},
+        .shading = {.diffuseConeCount = 6,
+                    .diffuseConeAperture = 40.0f,
+                    .coneStep = 0.5f,
+                    .stillSamples = kStillSamples},
     };
 
-    // `balanced` with 2×2 samples per pixel (the diffuse cones once per 2×2 pixels) and a 4096² sun
-    // shadow map: the lowest error measured, most of the gain in direct light (the edges of shadows
-    // and of the sun's patch).
+    // `balanced` with a 4096² sun shadow map: sharper shadow edges and sun patches. (With 2×2
+    // samples a pixel besides the still samples: full relMSE 0.0350 against 0.0356 over the
+    // scenes, for four times a frame.)
     const RenderSettings quality{
-        .image = {.supersample = 2, .diffuseDownscale = 4},
+        .image = {.supersample = 1, .diffuseDownscale = 4},
         .resources = {.voxelResolution = 64, .sunShadowMapSize = 4096},
-        .shading = {.diffuseConeCount = 6, .diffuseConeAperture = 40.0f, .coneStep = 0.5f},
+        .shading = {.diffuseConeCount = 6,
+                    .diffuseConeAperture = 40.0f,
+                    .coneStep = 0.5f,
+                    .stillSamples = kStillSamples},
     };
 
     // The seed's set (Crassin et al. 2011's layout): six 60° cones weighted 0.25 + 5 × 0.15 at 128³,
@@ -49,7 +62,7 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     // through a wall with voxels of its own, the first bounce the same at every grid size. Its
     // cones are 60° wide: with a ray along each, the 40° set sees a third of the hemisphere, and a
     // small bright patch (the sun room's) shows as a blotch where a cone meets it. Even at 60° six
-    // fixed directions drew it as streaks: the ring turns over four still frames, averaged.
+    // fixed directions drew it as streaks: the ring turns over four of the still frames, averaged.
     RenderSettings walls = balanced;
     walls.resources.rayVisibility = true;
     walls.shading.diffuseConeAperture = 60.0f;
@@ -59,19 +72,19 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
 }
 
 const std::vector<PresetSummary>& presetSummaries() {
-    // From the committed bench runs (lavapipe, 2 cores, 128×128, over the eight built-in scenes):
-    // docs/bench.json for fast, balanced and quality, docs/bench-walls.json and bench-classic.json
-    // for the others; a test holds these to them.
+    // From the committed bench run (docs/bench.json: lavapipe, 2 cores, 128×128, over the eight
+    // built-in scenes); a test holds these to it.
     static const std::vector<PresetSummary> summaries = {
-        {"fast", "32³, six 60° cones, one trace per 4×4 pixels", 14.1, 0.0746},
-        {"balanced", "64³, six 40° cones, one trace per 4×4 pixels", 19.0, 0.0526},
-        {"quality", "balanced with 2×2 samples per pixel and a 4096² sun shadow map", 54.3, 0.0439},
+        {"fast", "32³, six 60° cones, one trace per 4×4 pixels, 16 samples a pixel over still frames", 11.16, 0.05075},
+        {"balanced", "64³, six 40° cones, one trace per 4×4 pixels, 16 samples a pixel over still frames", 13.32,
+         0.03379},
+        {"quality", "balanced with a 4096² sun shadow map", 14.56, 0.03324},
         {"walls",
-         "balanced with ray visibility and 60° cones, turned over 4 still frames: no light through walls; light "
+         "balanced with ray visibility and 60° cones, turned over the still frames: no light through walls; light "
          "changes ~5× slower",
-         44.1, 0.0369},
-        {"classic", "the seed's six 60° cones (0.25 + 5 × 0.15) at 128³, 2×2 samples, every sample traced", 340.1,
-         0.0583},
+         44.16, 0.01944},
+        {"classic", "the seed's six 60° cones (0.25 + 5 × 0.15) at 128³, 2×2 samples, every sample traced", 572.25,
+         0.05833},
     };
     return summaries;
 }

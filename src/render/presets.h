@@ -17,9 +17,9 @@ namespace vct {
 std::vector<std::pair<std::string, RenderSettings>> renderPresets();
 
 // The preset `vct render` and `vct bench`'s defaults start from when none is named: the most
-// accurate the front offers, at a still's cost (512² in under 2 s on lavapipe, 2 cores). A still
-// lights the voxels once, so a preset whose light change alone takes longer than that does not
-// qualify, however accurate (walls, docs/bench-walls.json).
+// accurate the front offers whose light change fits kStillBudgetMs (lavapipe, 2 cores, 128×128).
+// A still lights the voxels once, so a preset whose light change alone takes longer does not
+// qualify, however accurate (walls, docs/bench.json).
 inline constexpr const char* kDefaultPreset = "quality";
 inline constexpr double kStillBudgetMs = 2000.0;
 

@@ -11,26 +11,22 @@ namespace vct {
 namespace {
 
 TEST(Presets, TheHelpsFiguresAreTheCommittedBenchRunsAndTheDefaultIsTheMostAccurate) {
-    // The front's presets come from the whole run, walls and classic from runs of their own.
-    std::vector<nlohmann::json> runs;
-    for (const char* name : {"bench.json", "bench-walls.json", "bench-classic.json"}) {
-        std::ifstream file(std::string(VCT_TEST_DATA_DIR) + "/../../docs/" + name);
-        ASSERT_TRUE(file) << "docs/" << name;
-        runs.push_back(nlohmann::json::parse(file));
-    }
+    // The whole run measures every preset.
+    std::ifstream file(std::string(VCT_TEST_DATA_DIR) + "/../../docs/bench.json");
+    ASSERT_TRUE(file) << "docs/bench.json";
+    const nlohmann::json bench = nlohmann::json::parse(file);
     size_t checked = 0;
     const PresetSummary* mostAccurate = nullptr;  // of those a still can afford (kStillBudgetMs)
     for (const PresetSummary& preset : presetSummaries()) {
         ASSERT_TRUE(findRenderPreset(preset.name).has_value()) << preset.name;
         bool affordable = false;
-        for (const nlohmann::json& bench : runs)
-            for (const nlohmann::json& row : bench.at("summary")) {
-                if (row.value("preset", "") != preset.name) continue;
-                EXPECT_NEAR(preset.stillFrameMs, row.at("static_gpu_ms").get<double>(), 0.06) << preset.name;
-                EXPECT_NEAR(preset.fullRelMse, row.at("relmse_full").get<double>(), 6e-5) << preset.name;
-                affordable = row.at("light_change_ms").get<double>() <= kStillBudgetMs;
-                ++checked;
-            }
+        for (const nlohmann::json& row : bench.at("summary")) {
+            if (row.value("preset", "") != preset.name) continue;
+            EXPECT_NEAR(preset.stillFrameMs, row.at("static_gpu_ms").get<double>(), 0.06) << preset.name;
+            EXPECT_NEAR(preset.fullRelMse, row.at("relmse_full").get<double>(), 6e-5) << preset.name;
+            affordable = row.at("light_change_ms").get<double>() <= kStillBudgetMs;
+            ++checked;
+        }
         if (affordable && (!mostAccurate || preset.fullRelMse < mostAccurate->fullRelMse)) mostAccurate = &preset;
     }
     EXPECT_EQ(checked, presetSummaries().size()) << "every preset is in the committed run";
