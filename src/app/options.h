@@ -12,12 +12,10 @@
 
 namespace vct {
 
-// The value of one given option, parsed with the option's name in any error.
+// The value of one given option, as its text (the option's row parses it, naming the option in any error).
 struct OptionValue {
     const Arguments& arguments;
     const std::string& name;
-    uint32_t whole(uint32_t min, uint32_t max) const { return arguments.unsignedInt(name, 0, min, max); }
-    float number(float min, float max) const { return arguments.number(name, 0.0f, min, max); }
     std::string text() const { return arguments.text(name, ""); }
 };
 

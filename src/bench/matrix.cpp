@@ -16,6 +16,9 @@ RenderSettings withImage(RenderSettings settings, const RenderSettings& imageSet
     return settings;
 }
 
+// The matrix's sun shadow map where a setting does not name another.
+constexpr uint32_t kMatrixSunShadowMap = 2048;
+
 // A matrix entry: what differs from the renderer's defaults, at one sample per pixel.
 RenderSettings variant(const ResourceSettings& resources, const ShadingSettings& shading, uint32_t supersample = 1,
                        uint32_t diffuseDownscale = 1) {
@@ -44,10 +47,8 @@ void addPresets(std::vector<BenchSetting>& matrix, const RenderSettings& imageSe
 
 std::string settingLabel(const RenderSettings& settings) {
     // What a label leaves out: the matrix's base, the renderer's defaults at one sample a pixel
-    // with a 2048² sun shadow map. Its main axes first, always; then what differs from the base.
-    RenderSettings base;
-    base.image.supersample = 1;
-    base.resources.sunShadowMapSize = 2048;
+    // with the matrix's sun shadow map. Its main axes first, always; then what differs from the base.
+    const RenderSettings base = variant({.sunShadowMapSize = kMatrixSunShadowMap}, {});
     std::string always, differs;
     for (const SettingRow& row : settingTable()) {
         if (!row.benchKey) continue;
@@ -81,7 +82,7 @@ std::vector<BenchSetting> defaultMatrix(const RenderSettings& imageSettings) {
     // do to direct light. The light converges everywhere but at 128³, where converging takes about
     // a minute per light change on lavapipe: there, one bounce (b1). 9 cones of 40° measured the
     // same as 6 at 64³, so only 128³ has them.
-    const uint32_t sun = 2048;
+    const uint32_t sun = kMatrixSunShadowMap;
     const std::vector<RenderSettings> variants = {
         variant({.voxelResolution = 64, .sunShadowMapSize = sun}, {}),  // the base
         // voxels

@@ -210,9 +210,7 @@ glm::mat4 Renderer::writeFrameConstants(const glm::mat4& cameraViewProjection) {
                                                                              2.0f * offset.y / float(height), 0.0f)) *
                                    cameraViewProjection;
     constants.inverseViewProjection = glm::inverse(constants.viewProjection);
-    Camera local = camera_;
-    local.position -= facts_.origin;
-    constants.cameraPosition = local.position;
+    constants.cameraPosition = camera_.position - facts_.origin;
     constants.lightCount = uint32_t(lightTable_.layout().lights.size());
     constants.firstAreaLight = lightTable_.layout().firstAreaLight;
     constants.shadowViewCount = uint32_t(lightTable_.layout().views.size());

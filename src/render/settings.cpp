@@ -5,13 +5,6 @@
 
 namespace vct {
 
-std::optional<RenderMode> parseRenderMode(const std::string& name) {
-    if (name == "full") return RenderMode::Full;
-    if (name == "direct") return RenderMode::Direct;
-    if (name == "indirect") return RenderMode::Indirect;
-    return std::nullopt;
-}
-
 const char* renderModeName(RenderMode mode) {
     switch (mode) {
         case RenderMode::Full: return "full";
@@ -19,15 +12,6 @@ const char* renderModeName(RenderMode mode) {
         case RenderMode::Indirect: return "indirect";
     }
     return "?";
-}
-
-std::string bouncesText(uint32_t bounces) {
-    return bounces == kConvergedBounces ? "converged" : std::to_string(bounces);
-}
-
-std::string diffuseResolutionName(uint32_t diffuseDownscale) {
-    if (diffuseDownscale <= 1) return "full";
-    return diffuseDownscale == 2 ? "half" : diffuseDownscale == 4 ? "quarter" : "1/" + std::to_string(diffuseDownscale);
 }
 
 const char* debugViewLabel(DebugView view) {

@@ -21,7 +21,7 @@ namespace vct {
 // emissive surfaces at the first hit).
 enum class RenderMode { Full, Direct, Indirect };
 
-std::optional<RenderMode> parseRenderMode(const std::string& name);
+// "full", "direct", "indirect": as --mode spells it (its row in setting_table.cpp reads these).
 const char* renderModeName(RenderMode mode);
 
 // Views for understanding, shown instead of light: the values the shading pass reads.
@@ -68,8 +68,6 @@ inline constexpr uint32_t kConvergedBounces = 0;
 inline constexpr float kBounceTolerance = 0.01f;
 // Iterations one frame runs at most while converging (vct render and vct bench).
 inline constexpr uint32_t kMaxBouncesPerFrame = 32;
-// "converged" or the count, as --bounces takes it.
-std::string bouncesText(uint32_t bounces);
 
 // The grid whose voxels ShadingSettings::coneStartOffset counts: the offset is a world distance,
 // the same at every voxel resolution.
@@ -86,9 +84,6 @@ struct ImageSettings {
     uint32_t diffuseDownscale = 1;
     bool operator==(const ImageSettings&) const = default;
 };
-
-// "full", "half" or "quarter", as --diffuse-resolution names ImageSettings::diffuseDownscale 1, 2, 4.
-std::string diffuseResolutionName(uint32_t diffuseDownscale);
 
 struct ResourceSettings {
     uint32_t voxelResolution = 128;  // voxels per side, a power of two from 32 to 512
