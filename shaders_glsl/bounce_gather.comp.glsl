@@ -66,10 +66,10 @@ void gatherVoxel(ivec3 voxel) {
     if (normalLength > 0.25f && coneStartIsClear(voxel, normal)) {
         vec3 center = gridToWorld(frame.grid, vec3(voxel) + 0.5f);
         float voxelSize = frame.grid.voxelSize;
-        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). The ring is not turned: the voxels' light is
-        // gathered anew by each bounce, not averaged over frames.
+        // Lambertian: albedo/π · (π Σ wᵢ Lᵢ). The ring is not turned and every beam is traced: the
+        // voxels' light is gathered anew by each bounce, not averaged over frames.
         vec3 gathered = traceDiffuseConeSet(center + normal * (BOUNCE_CONE_START * voxelSize), normal, BOUNCE_CONE_START,
-                                            max(frame.diffuseConeCount, MIN_BOUNCE_CONES), 0.0f)
+                                            max(frame.diffuseConeCount, MIN_BOUNCE_CONES), 0.0f, ALL_BEAMS, 0.0f)
                             .rgb;
         reflected = imageLoad(voxelAlbedo, voxel).rgb * gathered * frame.radianceScale;
     }

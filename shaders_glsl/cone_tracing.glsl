@@ -324,23 +324,30 @@ ConeResult traceCone(vec3 origin, vec3 direction, float tanHalfAperture, float s
 // cone that passes the edge goes on. Weighted by solid angle: the central beam holds a quarter of
 // the cone's, the four the rest. (A single 40° cone aimed across a box's floor and wall took the
 // floor for 0.92 of it at 40° from straight down, where 0.64 is its share, and 0.03 at 50°, 0.32.)
-// `heightRate`: dot(axis, normal), as traceCone takes it.
+// `beam`: ALL_BEAMS, or the one beam to trace (AXIS_BEAM, or BEAM_AROUND_AXIS at `beamAzimuth`),
+// which the still frames' mean weighs (FrameConstants.diffuseBeam). `heightRate`: dot(axis, normal),
+// as traceCone takes it.
 ConeResult traceDiffuseCone(vec3 origin, vec3 axis, float tanHalfAperture, float startHeight, vec3 normal,
-                            float heightRate) {
+                            float heightRate, uint beam, float beamAzimuth) {
     if ((frame.componentFlags & RAY_VISIBILITY) == 0u)
         return traceCone(origin, axis, tanHalfAperture, startHeight, heightRate);
     float beamTan = 0.5f * tanHalfAperture;
     float offset = 0.6f * atan(tanHalfAperture);
     vec3 u = perpendicularTo(axis);
     vec3 v = cross(axis, u);
+    if (beam == AXIS_BEAM) return traceCone(origin, axis, beamTan, startHeight, heightRate);
+    if (beam == BEAM_AROUND_AXIS) {
+        vec3 direction = normalize(cos(offset) * axis + sin(offset) * (cos(beamAzimuth) * u + sin(beamAzimuth) * v));
+        return traceCone(origin, direction, beamTan, startHeight, max(dot(direction, normal), 0.0f));
+    }
     ConeResult centre = traceCone(origin, axis, beamTan, startHeight, heightRate);
     ConeResult result = ConeResult(0.25f * centre.radiance, 0.25f * centre.occlusion);
     for (int k = 0; k < 4; ++k) {
         vec3 side = k == 0 ? u : k == 1 ? -u : k == 2 ? v : -v;
         vec3 direction = normalize(cos(offset) * axis + sin(offset) * side);
-        ConeResult beam = traceCone(origin, direction, beamTan, startHeight, max(dot(direction, normal), 0.0f));
-        result.radiance += 0.1875f * beam.radiance;
-        result.occlusion += 0.1875f * beam.occlusion;
+        ConeResult around = traceCone(origin, direction, beamTan, startHeight, max(dot(direction, normal), 0.0f));
+        result.radiance += 0.1875f * around.radiance;
+        result.occlusion += 0.1875f * around.occlusion;
     }
     return result;
 }
@@ -350,8 +357,9 @@ ConeResult traceDiffuseCone(vec3 origin, vec3 axis, float tanHalfAperture, float
 // cones touch. The weights sum to 1, so a uniform surrounding radiance L gives back L and the
 // irradiance is π·Σ wᵢ·Lᵢ. Returns the weighted radiance (rgb) and the weighted occlusion (a).
 // `coneCount` cones of the frame's aperture and centre weight; the ring turned by `ringTurn` of the
-// spacing between its cones.
-vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneCount, float ringTurn) {
+// spacing between its cones; `beam` and `beamAzimuth` as traceDiffuseCone takes them.
+vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneCount, float ringTurn, uint beam,
+                         float beamAzimuth) {
     uint count = max(coneCount, 1u);
     float tanHalf = frame.coneTanHalfAperture;
     float centreWeight = count == 1u ? 1.0f : frame.diffuseCentreWeight;
@@ -366,23 +374,26 @@ vec4 traceDiffuseConeSet(vec3 origin, vec3 normal, float startHeight, uint coneC
     vec3 tangent = perpendicularTo(normal);
     vec3 bitangent = cross(normal, tangent);
 
-    ConeResult centre = traceDiffuseCone(origin, normal, tanHalf, startHeight, normal, 1.0f);
+    ConeResult centre = traceDiffuseCone(origin, normal, tanHalf, startHeight, normal, 1.0f, beam, beamAzimuth);
     vec3 radiance = centreWeight * centre.radiance;
     float occlusion = centreWeight * centre.occlusion;
     for (uint i = 1u; i < count; ++i) {
         float azimuth = 6.28318530718f * (float(i - 1u) + ringTurn) / float(count - 1u);
         vec3 around = cos(azimuth) * tangent + sin(azimuth) * bitangent;
         vec3 direction = normalize(cos(ringAngle) * normal + sin(ringAngle) * around);
-        ConeResult side = traceDiffuseCone(origin, direction, tanHalf, startHeight, normal, dot(direction, normal));
+        ConeResult side =
+            traceDiffuseCone(origin, direction, tanHalf, startHeight, normal, dot(direction, normal), beam, beamAzimuth);
         radiance += sideWeight * side.radiance;
         occlusion += sideWeight * side.occlusion;
     }
     return vec4(radiance, occlusion);
 }
 
-// The frame's diffuse cones (frame.diffuseConeCount), the ring turned as the frame says.
+// The frame's diffuse cones (frame.diffuseConeCount), the ring turned and its beams chosen as the
+// frame says.
 vec4 traceDiffuseCones(vec3 origin, vec3 normal, float startHeight) {
-    return traceDiffuseConeSet(origin, normal, startHeight, frame.diffuseConeCount, frame.diffuseRingTurn);
+    return traceDiffuseConeSet(origin, normal, startHeight, frame.diffuseConeCount, frame.diffuseRingTurn,
+                               frame.diffuseBeam, frame.diffuseBeamAzimuth);
 }
 
 // The GGX lobe as one cone: the cone that holds half of the lobe's energy. GGX puts a fraction

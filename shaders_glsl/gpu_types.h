@@ -123,8 +123,17 @@ struct FrameConstants {
     vec4 environment;  // rgb: the sky's radiance (Scene::environment), seen by cones that leave the grid;
                        // w = 1: an environment image is bound, and rgb multiplies it (sky.glsl)
     float specularConeMaxTan;  // tan(half-aperture) of the widest specular cone
-    float unused0, unused1, unused2;  // std140 rounds the block to 16 bytes: room for the next settings
+    // With ray visibility, which of its five beams each screen cone traces this turn (DiffuseBeam in
+    // src/render/settings.h): ALL_BEAMS, AXIS_BEAM, or BEAM_AROUND_AXIS at diffuseBeamAzimuth radians.
+    uint diffuseBeam;
+    float diffuseBeamAzimuth;
+    float unused0;  // std140 rounds the block to 16 bytes: room for the next setting
 };
+
+// FrameConstants.diffuseBeam (cone_tracing.glsl, traceDiffuseCone).
+const uint ALL_BEAMS = 0u;
+const uint AXIS_BEAM = 1u;
+const uint BEAM_AROUND_AXIS = 2u;
 
 // What the shading pass shows instead of light (FrameConstants.debugView), for understanding.
 const uint DEBUG_NONE = 0u;

@@ -66,7 +66,7 @@ std::vector<std::pair<std::string, RenderSettings>> renderPresets() {
     RenderSettings walls = balanced;
     walls.resources.rayVisibility = true;
     walls.shading.diffuseConeAperture = 60.0f;
-    walls.shading.diffuseConeTurns = 4;
+    walls.shading.diffuseConeTurns = 16;
 
     return {{"fast", fast}, {"balanced", balanced}, {"quality", quality}, {"walls", walls}, {"classic", classic}};
 }

@@ -243,6 +243,9 @@ glm::mat4 Renderer::writeFrameConstants(const glm::mat4& cameraViewProjection) {
     constants.specularConeMaxTan = float(std::tan(glm::radians(0.5 * double(shading.specularMaxAperture))));
     const uint32_t turns = diffuseRingTurns(shading);
     constants.diffuseRingTurn = float(ringTurn_ % turns) / float(turns);
+    const DiffuseBeam beam = diffuseBeamOfTurn(shading, settings_.resources.rayVisibility, ringTurn_);
+    constants.diffuseBeam = beam.beam;
+    constants.diffuseBeamAzimuth = beam.azimuth;
     constants.debugVoxelMip = shading.debugVoxelMip;
     constants.diffuseDownscale = settings_.image.diffuseDownscale;
     constants.environment = glm::vec4(environment_, sky_->mapped() ? 1.0f : 0.0f);

@@ -191,7 +191,8 @@ std::vector<SettingRow> makeSettingTable() {
         {.option = "cone-turns",
          .shape = "N",
          .help = "the diffuse cones' ring turned N times about the normal, one still frame each, and the frames "
-                 "averaged (1 = fixed directions)",
+                 "averaged (1 = fixed directions); with --visibility rays and N in fours, each turn traces one of "
+                 "a cone's five beams",
          .group = G::Cones,
          .access = settingField<&R::shading, &ShadingSettings::diffuseConeTurns>(),
          .label = "ring turns",

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <glm/gtc/constants.hpp>
+
 namespace vct {
 
 const char* renderModeName(RenderMode mode) {
@@ -72,6 +74,18 @@ bool needsDiffuseCones(const ShadingSettings& shading) {
 uint32_t diffuseRingTurns(const ShadingSettings& shading) {
     const bool ring = needsDiffuseCones(shading) && shading.diffuseConeCount > 1;
     return ring ? std::max(shading.diffuseConeTurns, 1u) : 1u;
+}
+
+DiffuseBeam diffuseBeamOfTurn(const ShadingSettings& shading, bool rayVisibility, uint32_t turn) {
+    const uint32_t turns = diffuseRingTurns(shading);
+    if (!rayVisibility || turns % 4 != 0) return {};
+    turn %= turns;
+    if (turn % 4 == 0) return {.beam = glsl::AXIS_BEAM};
+    // The beams around the axis in a stride of 7 (coprime with every count up to 12): taken in
+    // order, their azimuth turned with the ring's and a sunlit patch came out as a V-shaped streak.
+    const uint32_t around = turn - turn / 4 - 1, aroundCount = turns - turns / 4;
+    return {.beam = glsl::BEAM_AROUND_AXIS,
+            .azimuth = 2.0f * glm::pi<float>() * float((around * 7u) % aroundCount) / float(aroundCount)};
 }
 
 uint32_t stillFramesAveraged(const ShadingSettings& shading) {

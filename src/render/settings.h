@@ -129,7 +129,8 @@ struct ShadingSettings {
     // The screen's ring of diffuse cones turned this many times about the normal, by equal shares
     // of the spacing between its cones, one still frame each, and those frames averaged
     // (Renderer::settling): more directions from the same cones a frame. With ray visibility the
-    // cones see sharply, and six fixed directions drew a small sunlit patch as streaks. 1: fixed.
+    // cones see sharply, and six fixed directions drew a small sunlit patch as streaks; turns in
+    // fours then trace one of each cone's five beams a turn (diffuseBeamOfTurn). 1: fixed.
     uint32_t diffuseConeTurns = 1;
     // Samples per pixel gathered over still frames: each still frame moves the image's samples
     // within their pixel (a Hammersley set whose first point is the centre, so a moving view shows
@@ -200,6 +201,16 @@ uint32_t diffuseRingTurns(const ShadingSettings& shading);
 // The still frames the image averages: every turn of the ring with every still sample, the least
 // common multiple of the two counts (1: the image is each frame's own).
 uint32_t stillFramesAveraged(const ShadingSettings& shading);
+// Which of each screen cone's five beams a turn of the ring traces, with ray visibility
+// (cone_tracing.glsl, traceDiffuseCone): `beam` glsl::ALL_BEAMS, AXIS_BEAM, or BEAM_AROUND_AXIS at
+// `azimuth` (radians). Where the ring turns in fours, each turn traces one beam a cone:
+// the axis every fourth turn, else one around it, those azimuths spread evenly over the turns, so the
+// turns' mean weighs the beams as the five do (a quarter the axis) at a fifth of the cones a frame.
+struct DiffuseBeam {
+    uint32_t beam = glsl::ALL_BEAMS;
+    float azimuth = 0.0f;
+};
+DiffuseBeam diffuseBeamOfTurn(const ShadingSettings& shading, bool rayVisibility, uint32_t turn);
 // The offset of still frame `frame`'s samples from their centres, in samples (each in [−½, ½)).
 glm::vec2 stillSampleOffset(const ShadingSettings& shading, uint32_t frame);
 // Whether the frame ends with the resolve pass: supersamples to average, or still frames.

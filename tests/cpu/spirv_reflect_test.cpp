@@ -354,9 +354,9 @@ TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
                          MEMBER(FrameConstants, firstAreaLight),
                          MEMBER(FrameConstants, environment),
                          MEMBER(FrameConstants, specularConeMaxTan),
+                         MEMBER(FrameConstants, diffuseBeam),
+                         MEMBER(FrameConstants, diffuseBeamAzimuth),
                          MEMBER(FrameConstants, unused0),
-                         MEMBER(FrameConstants, unused1),
-                         MEMBER(FrameConstants, unused2),
                      });
     expectSameLayout(shade, "VoxelGridParams",
                      {
