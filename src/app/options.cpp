@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "app/scene_overrides.h"
 #include "error.h"
 #include "render/presets.h"
 #include "render/setting_table.h"
@@ -12,12 +13,6 @@
 
 namespace vct {
 namespace {
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
 
 void applyPreset(const OptionValue& value, RenderSettings& settings) {
     const std::optional<RenderSettings> preset = findRenderPreset(value.text());
@@ -74,28 +69,17 @@ std::vector<Option> makeSharedOptions() {
             options.push_back({"disable", "LIST",
                                "components to switch off, comma-separated: " + componentOptionNames(), applyDisabled});
     }
-    const std::vector<Option> sceneAndDevice = {
-        {"scene", "FILE|NAME", "a .gltf/.glb file or a built-in scene (default cornell):" + sceneNames},
-        {"camera-pos", "x,y,z", "camera position (overrides the scene's camera)"},
-        {"camera-target", "x,y,z", "the point the camera looks at"},
-        {"fov", "DEGREES", "vertical field of view"},
-        {"light-dir", "x,y,z", "direction the sun's light travels (adds a sun if the scene has none)"},
-        {"light-intensity", "E",
-         "illuminance (lux) of the scene's first sun, or of the one --light-dir adds (default " +
-             number(kDefaultSunIlluminance) + "); refused without --light-dir if the scene has no sun"},
-        {"environment", "R,G,B|FILE.hdr",
-         "the sky every ray leaving the scene sees: a uniform radiance, or an equirectangular Radiance "
-         "image (its centre looks along -Z, its top up) (default black; a scene without light gets a "
-         "default sky with its default sun, unless this names its sky, 0,0,0 included)"},
-        {"environment-rotation", "DEGREES",
-         "turn the --environment image about +Y, counter-clockwise seen from above (default 0)"},
+    options.push_back({"scene", "FILE|NAME", "a .gltf/.glb file or a built-in scene (default cornell):" + sceneNames});
+    // The camera, sun and sky, from their table (app/scene_overrides.h).
+    for (const SceneOverrideRow& row : sceneOverrideTable()) options.push_back({row.option, row.shape, row.help});
+    const std::vector<Option> device = {
         {"device", "NAME", "use the Vulkan device whose name contains NAME (or $VCT_DEVICE)"},
         {"validate", "", "enable the Khronos validation layer"},
         {"strict", "", "treat scene warnings (e.g. a missing texture) as errors"},
         {"allowed-root", "DIR", "let the scene's URIs reach files under DIR (default: its folder)"},
         {"gpu-timeout", "SECONDS", "longest wait for the GPU before giving up (default 120)"},
     };
-    options.insert(options.end(), sceneAndDevice.begin(), sceneAndDevice.end());
+    options.insert(options.end(), device.begin(), device.end());
     return options;
 }
 

@@ -11,32 +11,6 @@
 
 namespace vct {
 
-SceneOverrides sceneOverridesFromArguments(const Arguments& arguments) {
-    SceneOverrides overrides;
-    overrides.cameraPosition = arguments.vector3("camera-pos");
-    overrides.cameraTarget = arguments.vector3("camera-target");
-    if (arguments.has("fov")) overrides.yfovDegrees = arguments.number("fov", 45.0f, 1.0f, 179.0f);
-    overrides.lightDirection = arguments.vector3("light-dir");
-    if (overrides.lightDirection && glm::length(*overrides.lightDirection) < 1e-6f)
-        throw Error("--light-dir must not be the zero vector");
-    if (arguments.has("light-intensity"))
-        overrides.lightIntensity = arguments.number("light-intensity", kDefaultSunIlluminance, 0.0f, 1e9f);
-    const std::string environment = arguments.text("environment", "");
-    if (namesEnvironmentImage(environment)) {
-        checkEnvironmentImageExists(environment);
-        overrides.environmentImage = environment;
-    } else {
-        overrides.environment = arguments.vector3("environment");
-        if (overrides.environment) checkSkyRadiance(*overrides.environment);
-    }
-    if (arguments.has("environment-rotation")) {
-        if (overrides.environmentImage.empty())
-            throw Error("--environment-rotation turns an environment image: give --environment FILE.hdr too");
-        overrides.environmentRotation = glm::radians(arguments.number("environment-rotation", 0.0f, -3600.0f, 3600.0f));
-    }
-    return overrides;
-}
-
 void checkSceneArguments(const Arguments& arguments) {
     sceneOverridesFromArguments(arguments);
     checkSceneName(arguments.text("scene", "cornell"), "--scene");

@@ -6,25 +6,13 @@
 #include <string>
 
 #include "app/arguments.h"
+#include "app/scene_overrides.h"
 #include "gpu/context.h"
 #include "render/settings.h"
 #include "scene/scene.h"
 #include "scene/scene_limits.h"
 
 namespace vct {
-
-// --camera-pos/--camera-target/--fov, --light-dir/--light-intensity and --environment with
-// --environment-rotation, read and checked before the scene loads.
-struct SceneOverrides {
-    std::optional<glm::vec3> cameraPosition, cameraTarget;
-    std::optional<float> yfovDegrees;
-    std::optional<glm::vec3> lightDirection;  // not the zero vector
-    std::optional<float> lightIntensity;
-    std::optional<glm::vec3> environment;  // finite, not negative
-    std::string environmentImage;          // --environment FILE.hdr: the sky's image (the file exists)
-    float environmentRotation = 0.0f;      // --environment-rotation, radians (Scene::environmentRotation)
-};
-SceneOverrides sceneOverridesFromArguments(const Arguments& arguments);
 
 // Everything the scene options say that can be checked without loading the scene or a device:
 // the overrides' values, and that --scene names a built-in scene or a file that exists (the

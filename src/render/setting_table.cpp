@@ -316,12 +316,6 @@ std::vector<SettingRow> makeSettingTable() {
     };
 }
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 }  // namespace
 
 const std::vector<SettingRow>& settingTable() {
@@ -343,7 +337,7 @@ const NamedValue* namedValue(const SettingRow& row, double value) {
 
 std::string settingText(const SettingRow& row, double value) {
     const NamedValue* named = namedValue(row, value);
-    return named ? named->name : number(value);
+    return named ? named->name : shortNumber(value);
 }
 
 std::string settingDomain(const SettingRow& row) {
@@ -352,7 +346,8 @@ std::string settingDomain(const SettingRow& row) {
         names += (i == 0 ? "" : i + 1 == row.names.size() ? " or " : ", ") + std::string(row.names[i].name);
     if (row.namesOnly) return names;
     const std::string kind = row.powerOfTwo ? "a power of two" : row.whole ? "a whole number" : "a number";
-    return (names.empty() ? "" : names + " or ") + kind + " from " + number(row.min) + " to " + number(row.max);
+    return (names.empty() ? "" : names + " or ") + kind + " from " + shortNumber(row.min) + " to " +
+           shortNumber(row.max);
 }
 
 std::optional<double> parseSetting(const SettingRow& row, const std::string& text) {
@@ -369,19 +364,27 @@ std::optional<double> parseSetting(const SettingRow& row, const std::string& tex
 
 std::string labelPart(const SettingRow& row, double value) {
     const NamedValue* named = namedValue(row, value);
-    return row.labelTag + (named ? std::string(named->labelPart) : number(value));
+    return row.labelTag + (named ? std::string(named->labelPart) : shortNumber(value));
 }
 
 std::string settingsMarkdown(const RenderSettings& defaults) {
     std::string table = "| option | takes | default | what it sets |\n| --- | --- | --- | --- |\n";
     for (const SettingRow& row : settingTable()) {
-        std::string shape = row.shape;
-        for (size_t at = shape.find('|'); at != std::string::npos; at = shape.find('|', at + 2))
-            shape.replace(at, 1, "\\|");  // a bar inside a Markdown table cell
-        table += "| `--" + std::string(row.option) + " " + shape + "` | " + settingDomain(row) + " | " +
-                 settingText(row, defaults) + " | " + row.help + " |\n";
+        table += "| `--" + std::string(row.option) + " " + markdownCell(row.shape) + "` | " + settingDomain(row) +
+                 " | " + settingText(row, defaults) + " | " + row.help + " |\n";
     }
     return table;
+}
+
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+std::string markdownCell(std::string text) {
+    for (size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.replace(at, 1, "\\|");
+    return text;
 }
 
 }  // namespace vct

@@ -86,6 +86,10 @@ std::string labelPart(const SettingRow& row, double value);
 // The rows as the README's option table (Markdown), defaults from `defaults`: a test holds the
 // README to it.
 std::string settingsMarkdown(const RenderSettings& defaults);
+// A number as the tables write it ("%g": 0.25, 4096, 1e+09).
+std::string shortNumber(double value);
+// `text` for a Markdown table cell: its bars escaped.
+std::string markdownCell(std::string text);
 
 // The accessor of RenderSettings::*part's ::*member, for a row.
 template <auto part, auto member>

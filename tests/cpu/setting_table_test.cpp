@@ -3,12 +3,10 @@
 // use, and the README's option table must be the one it makes.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "bench/matrix.h"
+#include "readme_tables.h"
 #include "render/presets.h"
 #include "render/setting_table.h"
 
@@ -85,25 +83,8 @@ TEST(SettingTable, TwoSettingsTheBenchRecordsApartGetTwoLabels) {
 
 // The README's settings table, between its markers. VCT_UPDATE_README=1 writes it instead.
 TEST(SettingTable, TheReadmesOptionTableIsTheOneTheRowsMake) {
-    const std::string path = std::string(VCT_TEST_DATA_DIR) + "/../../README.md";
-    std::ifstream file(path);
-    ASSERT_TRUE(file) << path;
-    std::stringstream text;
-    text << file.rdbuf();
-    std::string readme = text.str();
-    const std::string begin = "<!-- settings table: made from src/render/setting_table.cpp -->\n";
-    const std::string end = "<!-- end of the settings table -->";
-    const size_t from = readme.find(begin), to = readme.find(end);
-    ASSERT_NE(from, std::string::npos) << "README.md has no '" << begin << "'";
-    ASSERT_NE(to, std::string::npos) << "README.md has no '" << end << "'";
-    const std::string expected = settingsMarkdown(*findRenderPreset(kDefaultPreset));
-    const std::string written = readme.substr(from + begin.size(), to - from - begin.size());
-    if (written != expected && std::getenv("VCT_UPDATE_README")) {
-        readme.replace(from + begin.size(), to - from - begin.size(), expected);
-        std::ofstream(path) << readme;
-        return;
-    }
-    EXPECT_EQ(written, expected) << "run the test with VCT_UPDATE_README=1 to write the table the rows make";
+    test::expectReadmeTable("<!-- settings table: made from src/render/setting_table.cpp -->\n",
+                            "<!-- end of the settings table -->", settingsMarkdown(*findRenderPreset(kDefaultPreset)));
 }
 
 }  // namespace
