@@ -8,7 +8,6 @@
 #include "error.h"
 #include "render/presets.h"
 #include "render/setting_table.h"
-#include "scene/default_light.h"
 #include "scene/load.h"
 
 namespace vct {

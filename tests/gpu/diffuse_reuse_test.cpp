@@ -107,12 +107,7 @@ TEST_F(DiffuseReuse, AViewThatStopsSettlesInFourFramesOnAFreshRendersImage) {
     EXPECT_FALSE(renderer.settling()) << "a first frame traces everything";
     const Camera stopped = orbited(renderer.camera(), scene.bounds().center(), 5.0f);
     renderer.setCamera(stopped);
-    int frames = 0;
-    do {
-        renderer.renderFrame();
-        ++frames;
-    } while (renderer.settling() && frames < 10);
-    EXPECT_EQ(frames, 4);
+    EXPECT_EQ(1 + renderer.renderSettled(10).settleFrames, 4u) << "frames until settled";
     Renderer fresh(gpu(), scene, reducedSettings());
     fresh.setCamera(stopped);
     fresh.renderFrame();

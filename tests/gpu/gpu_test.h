@@ -11,6 +11,7 @@
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "render/presets.h"
+#include "render/renderer.h"
 #include "render/settings.h"
 
 namespace vct::test {
@@ -31,6 +32,14 @@ inline double largestDifference(const Image& image, const Image& reference) {
         sum += reference.rgb[i];
     }
     return largest / (sum / double(reference.rgb.size()));
+}
+
+// Renders frames while `renderer` is settling, at most `limit` of them: how many it rendered.
+// (Renderer::renderSettled renders one first, settling or not.)
+inline uint32_t renderWhileSettling(Renderer& renderer, uint32_t limit) {
+    uint32_t frames = 0;
+    for (; renderer.settling() && frames < limit; ++frames) renderer.renderFrame();
+    return frames;
 }
 
 // What the small render tests start from: a square image of `size` pixels, one sample a pixel, a

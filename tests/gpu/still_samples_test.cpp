@@ -33,12 +33,7 @@ TEST_F(StillSamples, TheFirstFrameIsUnmovedAndTheStillImageTakesAFramePerSample)
     Renderer moving(gpu(), scene, directSettings(8));
     moving.renderFrame();
     EXPECT_TRUE(sameImages(moving.readImage(), first)) << "the first sample is the pixel's centre";
-    uint32_t frames = 1;
-    while (moving.settling() && frames < 20) {
-        moving.renderFrame();
-        ++frames;
-    }
-    EXPECT_EQ(frames, 8u);
+    EXPECT_EQ(1 + renderWhileSettling(moving, 19), 8u);
     const Image mean = moving.readImage();
     EXPECT_FALSE(sameImages(mean, first));
     moving.renderFrame();

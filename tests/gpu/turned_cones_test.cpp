@@ -40,12 +40,7 @@ TEST_F(TurnedCones, TheFirstFrameIsTheFixedRingsAndEachTurnIsOneMoreStillFrame) 
     Renderer turned(gpu(), scene, turnedSettings(kTurns));
     turned.renderFrame();
     EXPECT_TRUE(sameImages(turned.readImage(), fixedImage)) << "the first turn is the fixed ring";
-    uint32_t frames = 1;
-    while (turned.settling() && frames < 10) {
-        turned.renderFrame();
-        ++frames;
-    }
-    EXPECT_EQ(frames, kTurns);
+    EXPECT_EQ(1 + renderWhileSettling(turned, 9), kTurns);
     const Image mean = turned.readImage();
     const double change = largestDifference(mean, fixedImage);
     std::printf("[ turns ] the mean of %u turns differs from the fixed ring's image by up to %.3f of its mean\n",
