@@ -244,8 +244,12 @@ void marchOneStep(inout ConeMarch march, ConeSetup cone, bool blendFinest) {
     // which side it shows); the directional chains do have sides.
     bool nearHit = cone.hitDistance - distance < 1.0f;
     vec4 voxel = sampleVoxels(uvw, lod, chainReads(lod, distance, cone), cone.direction, blendFinest && !nearHit);
+    // Behind the planes of the texels the sample read: below level 1 it blends in the directional
+    // chains, whose finest texels are level 1's. A sheet behind a cone's start lies in the chain
+    // texels that run along it, outside the finer level's footprint.
+    float behindLod = (frame.componentFlags & ANISOTROPIC_VOXELS) != 0u ? max(lod, 1.0f) : lod;
     if ((frame.componentFlags & RAY_VISIBILITY) != 0u && voxel.a > 0.0f &&
-        behindSurfaces(uvw, lod, position, cone.resolution))
+        behindSurfaces(uvw, behindLod, position, cone.resolution))
         voxel.rgb = vec3(0.0f);
     if (voxel.a > 0.0f) {
         float correctedAlpha = 1.0f - pow(max(1.0f - voxel.a, 0.0f), stepLength / exp2(lod));

@@ -78,6 +78,12 @@ Seen seenFromBothSides(ivec3 voxel) {
         // Its front faces +axis: cones leave it along +axis (and rays along +axis see it from behind).
         if (sided && facing > -FRONT_FACING * normalLength) seen.leaving = LEAVING_POSITIVE;
         if (sided && -facing > -FRONT_FACING * normalLength) seen.leaving = LEAVING_NEGATIVE;
+        // With ray visibility cones also leave its back: surfaces reflect on both sides, and the
+        // cones leaving a sheet's back would find the texel beyond it carrying the sheet's lit
+        // front (behindOpaque), opaque at their first sample: the light of one room in the next.
+        // Rays that meet the front need no carried opacity: their hit ends their march there.
+        if (sided && opaqueFromBehind != 0u && abs(facing) > -FRONT_FACING * normalLength)
+            seen.leaving = LEAVING_POSITIVE | LEAVING_NEGATIVE;
     }
     return seen;
 }

@@ -131,26 +131,21 @@ TEST_F(FailureModes, WithRayVisibilityASheetFacingTheDarkRoomLeaksUnderTwoPercen
     }
 }
 
-TEST_F(FailureModes, WithRayVisibilityASheetFacingTheLitRoomLeaksLessThanItDid) {
-    // A single double-sided sheet whose lit front faces away from the dark room. Target: 2 %, as
-    // for the sheet facing the other way; measured 2.4 / 6.6 / 4.3 % with the wall on a voxel
-    // boundary, a third of the way into a voxel and half way. What is left: a voxel where the sheet
-    // meets the floor or ceiling holds the lit face and the dark floor together, with one radiance
-    // and one normal halfway between theirs (radiance per side of a voxel is the next step). The
-    // bounds are regression guards, not the target.
+TEST_F(FailureModes, WithRayVisibilityASheetFacingTheLitRoomLeaksUnderTwoPercent) {
+    // A single double-sided sheet whose lit front faces away from the dark room: measured 0.00 /
+    // 0.00 / 0.55 % with the wall on a voxel boundary, a third of the way into a voxel and half way
+    // (the bench's 128², `walls`: 0.2 / 0.3 / 1.2 %).
+    // What is left lies where the sheet meets the floor, ceiling and walls: a voxel there holds the
+    // lit face and the dark floor together, with one radiance and one normal between theirs.
     const RenderSettings settings = withRayVisibility(smallSettings(32, 64));
     const float voxel = bench::twoRoomVoxelSize(64);
-    const struct {
-        float wallX;
-        double guard;
-    } walls[] = {{0.0f, 0.03}, {voxel / 3.0f, 0.08}, {-voxel / 2.0f, 0.05}};
-    for (const auto& wall : walls) {
+    for (float wallX : {0.0f, voxel / 3.0f, -voxel / 2.0f}) {
         const bench::LeakMeasurement leak =
-            bench::measureLightLeak(gpu(), settings, wall.wallX, bench::SharedWall::SheetFacingLitRoom);
-        std::printf("[ leak, rays ] sheet facing the lit room at x = %+.4f m: lit room %.5f, ratio %.5f\n", wall.wallX,
+            bench::measureLightLeak(gpu(), settings, wallX, bench::SharedWall::SheetFacingLitRoom);
+        std::printf("[ leak, rays ] sheet facing the lit room at x = %+.4f m: lit room %.5f, ratio %.5f\n", wallX,
                     leak.litRoomLuminance, leak.leakRatio());
         EXPECT_GT(leak.litRoomLuminance, 0.01);
-        EXPECT_LE(leak.leakRatio(), wall.guard) << "wall at x = " << wall.wallX << " (regression guard; target 0.02)";
+        EXPECT_LE(leak.leakRatio(), 0.02) << "wall at x = " << wallX;
     }
 }
 
