@@ -583,8 +583,9 @@ protected:
         return float(met) / float(rays);
     }
 };
+class BoxWithOneEmittingFaceGuard : public BoxWithOneEmittingFace {};
 
-TEST_F(BoxWithOneEmittingFace, ASingleConeSeesTheFloorAsMuchAsItsSolidAngleMeetsIt) {
+TEST_F(BoxWithOneEmittingFaceGuard, ASingleConeSeesTheFloorAsMuchAsItsSolidAngleMeetsIt) {
     // 40° cones (the balanced preset's) from the box's middle, turned from straight down to level.
     // Measured: 0.62 / 0.61 / 0.58 / 0.54 / 0.40 / 0.27 / 0.13 / 0.04 / 0.02 / 0.02 against truths
     // 1 / 1 / 1 / 0.91 / 0.64 / 0.32 / 0.06 / 0 / 0 / 0. A cone looking straight at the floor ends
@@ -593,7 +594,8 @@ TEST_F(BoxWithOneEmittingFace, ASingleConeSeesTheFloorAsMuchAsItsSolidAngleMeets
     // inset: 0.73 at opacity 0.78, though the box whose walls all emit gathers less), and trilinear
     // filtering halves an opaque texel's opacity half a texel from it. With the directional chains
     // storing optical depth instead (tried, not kept), these read 0.99 / 0.99 / 0.98 / 0.88 / 0.60 /
-    // 0.26 / 0.05 / 0 / 0 / 0. The bounds record the renderer as it is.
+    // 0.26 / 0.05 / 0 / 0 / 0. The bounds are regression guards at today's figures; the target is
+    // the truth, as ray visibility's diffuse set meets it within 10 % (below).
     build(Floor);
     const glm::vec3 origin(16.2f, 16.1f, 15.9f);
     const float halfAngle = glm::radians(20.0f);
@@ -611,12 +613,12 @@ TEST_F(BoxWithOneEmittingFace, ASingleConeSeesTheFloorAsMuchAsItsSolidAngleMeets
                     results[i].a, truths[i]);
         EXPECT_LE(results[i].r, truths[i] + 0.08f) << i * 10 << "°: more than the floor's share of the cone";
         if (truths[i] >= 0.5f) {
-            EXPECT_GE(results[i].r, 0.55f * truths[i]) << i * 10 << "°";
+            EXPECT_GE(results[i].r, 0.55f * truths[i]) << i * 10 << "° (regression guard)";
         }
     }
 }
 
-TEST_F(BoxWithOneEmittingFace, TheDiffuseConesWeighEachFaceAsTheCosineDoes) {
+TEST_F(BoxWithOneEmittingFaceGuard, WithTheMipsAloneTheDiffuseConesWeighEachFaceAsTheCosineDoes) {
     // The six cones (0.25 along the normal, 0.15 each around it at one aperture from it) against the
     // cosine-weighted share of the hemisphere that meets the emitting face: the quadrature the
     // indirect light rests on, apart from voxelization, injection and bounces. For 60° cones those
@@ -627,9 +629,11 @@ TEST_F(BoxWithOneEmittingFace, TheDiffuseConesWeighEachFaceAsTheCosineDoes) {
     // horizon (a quarter of the cosine), so a face across from the surface counts 1.37–1.67× and a
     // face low on its horizon 0.26–0.29× (mean |ln ratio| 0.50). That is the Cornell box's pattern
     // at `balanced`: the ceiling and the top of the walls too bright, the floor by the blocks too
-    // dark, cancelling in the mean. The bounds record the renderer as it is.
+    // dark, cancelling in the mean. The bounds are regression guards at today's figures; the target,
+    // 0.10, is ray visibility's (below).
     for (float aperture : {40.0f, 60.0f})
-        EXPECT_LE(diffuseSetLogError(aperture), aperture == 60.0f ? 0.20 : 0.55) << aperture << "°";
+        EXPECT_LE(diffuseSetLogError(aperture), aperture == 60.0f ? 0.20 : 0.55)
+            << aperture << "° (regression guard; target 0.10)";
 }
 
 TEST_F(BoxWithOneEmittingFace, WithRayVisibilityTheDiffuseConesWeighEachFaceAsTheCosineDoes) {

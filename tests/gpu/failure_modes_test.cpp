@@ -15,34 +15,27 @@
 namespace vct::test {
 namespace {
 
-// Bounds from the measurements (printed by each test), so that a regression shows. They record the
-// renderer as it is, not what it should reach:
-// - leak (ground truth 0), at 32² with converged bounces, the wall on a voxel boundary, a third and
-//   half a voxel in: a single sheet facing the lit room 41 / 40 / 33 % of the lit room's mean, facing
-//   the dark room 0.4 / 0.6 / 2.6 % (but the lit room then loses a third of its light through it),
-//   two faces 1 cm apart 5.9 / 10.7 / 11.3 % (8.8 % on the voxel boundary until the directional
-//   chains stopped carrying opacity across a surface the cones leave). Walls thinner than the
-//   coarse texels the cones read leak through their trilinear filtering, and a sheet's voxels are
-//   see-through from behind. Until the two rooms' quads were wound to face their normals, this
-//   measured 0.1-1.3 %: the wall then faced the dark room and the floor faced down, out of the rooms.
+// Regression guards (suite FailureModesGuard): bounds at today's figures, with the mips alone or
+// at `balanced`, so that a regression shows; each names its target, which ray visibility (`walls`)
+// is held to in suite FailureModes. Measured at 32² with converged bounces, the mips alone:
+// - leak (truth 0), the wall on a voxel boundary, a third and half a voxel in: a single sheet
+//   facing the lit room 41 / 40 / 33 % of the lit room's mean, facing the dark room 0.4 / 0.6 /
+//   2.6 % (but the lit room then loses a third of its light through it), two faces 1 cm apart 5.9 /
+//   10.7 / 11.3 %. Walls thinner than the coarse texels the cones read leak through their
+//   trilinear filtering, and a sheet's voxels are see-through from behind.
 // - brightness against resolution (Cornell box, first bounce, 32² × 2², anisotropic): 0.98, 0.92,
-//   0.95, 0.92 × its one-bounce path-traced truth at 32³, 64³, 128³, 256³ (spread 6.6 %; 0.95, 0.92,
-//   0.92, 0.90 before cone samples inside the grid stopped blending its faces with the empty border,
-//   which let light out of the coarse grids). The coarsest grid's voxels are thicker than the
-//   surfaces they hold and reflect a little more.
-// - flicker: 1 mm camera or light steps change 0.3–0.8 % of the image (relative L1).
-// - self-illumination: a lone lit plane gets no indirect light at all (0.00 %).
-struct FailureBounds {
-    // Dark room / lit room mean luminance, ground truth 0, by wall (bench::kSharedWalls' order).
+//   0.95, 0.92 × its one-bounce path-traced truth at 32³, 64³, 128³, 256³ (spread 6.6 %). The
+//   coarsest grid's voxels are thicker than the surfaces they hold and reflect a little more.
+struct RegressionGuards {
+    // Dark room / lit room mean luminance, by wall (bench::kSharedWalls' order). Target 0.02.
     double leakRatio[3] = {0.45, 0.03, 0.13};
-    double resolutionSpread = 0.20;     // (max − min) / mean of the first bounce's luminance, 32³…256³
-    double groundTruthRatioLow = 0.55;  // first-bounce luminance / its path-traced truth, each resolution
+    // (max − min) / mean of the first bounce's luminance, 32³…256³. Target 0.10 (0.05 over 64³…256³).
+    double resolutionSpread = 0.20;
+    // First-bounce luminance / its path-traced truth, each resolution. Target 0.90-1.10.
+    double groundTruthRatioLow = 0.55;
     double groundTruthRatioHigh = 1.10;
-    double cameraStepChange = 0.02;  // relative L1 change after a 1 mm camera move
-    double lightStepChange = 0.02;   // relative L1 change after a 1 mm light move
-    double selfIllumination = 0.02;  // a lone lit plane's indirect / direct light, ground truth 0
 };
-constexpr FailureBounds kBounds;
+constexpr RegressionGuards kGuards;
 
 RenderSettings smallSettings(uint32_t size, uint32_t voxels) {
     RenderSettings settings;
@@ -55,10 +48,12 @@ RenderSettings smallSettings(uint32_t size, uint32_t voxels) {
 }
 
 class FailureModes : public GpuTest {};
+class FailureModesGuard : public FailureModes {};
 
-TEST_F(FailureModes, ThinWallsLeakNoMoreLightIntoTheDarkRoomThanTheyDid) {
+TEST_F(FailureModesGuard, WithTheMipsAloneThinWallsLeakNoMoreLightIntoTheDarkRoomThanTheyDid) {
     // The wall on a voxel boundary (x = 0 is one, the grid being centred on the scene) and inside
-    // a voxel (a third of the way through one at 64³), as one sheet facing either room or as two faces.
+    // a voxel (a third of the way through one at 64³), as one sheet facing either room or as two
+    // faces. Target 2 %, which ray visibility meets (FailureModes.WithRayVisibility…).
     const RenderSettings settings = smallSettings(32, 64);
     const float voxel = bench::twoRoomVoxelSize(64);
     for (size_t w = 0; w < std::size(bench::kSharedWalls); ++w)
@@ -69,7 +64,8 @@ TEST_F(FailureModes, ThinWallsLeakNoMoreLightIntoTheDarkRoomThanTheyDid) {
                         bench::sharedWallName(wall), wallX, leak.litRoomLuminance, leak.darkRoomLuminance,
                         leak.leakRatio());
             EXPECT_GT(leak.litRoomLuminance, 0.01);
-            EXPECT_LE(leak.leakRatio(), kBounds.leakRatio[w]) << bench::sharedWallName(wall) << " at x = " << wallX;
+            EXPECT_LE(leak.leakRatio(), kGuards.leakRatio[w])
+                << bench::sharedWallName(wall) << " at x = " << wallX << " (regression guard; target 0.02)";
         }
 }
 
@@ -182,10 +178,8 @@ TEST_F(FailureModes, WithRayVisibilityTheFirstBounceHoldsAcrossResolutions) {
 
 TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
     // The sun room inside a shell 25 cm out (128², its camera, indirect light, against the sun
-    // room's path-traced reference; target 0.90-1.10 of it). Balanced reads 2.92: the mips let the
-    // shell's sunlit outside in through the sheets; walls' rays stop what crosses the sheets and its
-    // surface planes what its coarse samples would see of the shell beside them. Balanced's bound is
-    // a regression guard; walls is held to the target.
+    // room's path-traced reference; target 0.90-1.10 of it) at `walls`: its rays stop what crosses
+    // the sheets, and its surface planes what its coarse samples would see of the shell beside them.
     const std::string references = std::string(VCT_SOURCE_DIR) + "/assets/reference/sun-room-";
     const Image truth = readPfm(references + "indirect.pfm");
     const Scene shelled = bench::makeSunRoomInASunlitShell(bench::kShellGap);
@@ -201,21 +195,31 @@ TEST_F(FailureModes, ARoomInsideASunlitShellGetsTheLightOfTheRoomAlone) {
         std::printf("[ shell ] direct luminance %.3f x the sun room's truth\n", direct);
         EXPECT_NEAR(direct, 1.0, 0.03);
     }
-    for (const char* preset : {"balanced", "walls"}) {
-        RenderSettings settings = *findRenderPreset(preset);
-        settings.image.width = settings.image.height = 128;
-        const double ratio = bench::measureShelledRoomIndirect(gpu(), settings, truth);
-        std::printf("[ shell ] %s: indirect luminance %.3f x the sun room's truth\n", preset, ratio);
-        const bool rays = settings.resources.rayVisibility;
-        EXPECT_GE(ratio, 0.90) << preset;
-        if (rays) EXPECT_LE(ratio, 1.10) << preset;
-        else EXPECT_LE(ratio, 3.1) << preset << " (regression guard; target 1.10)";
-    }
+    RenderSettings settings = *findRenderPreset("walls");
+    settings.image.width = settings.image.height = 128;
+    const double ratio = bench::measureShelledRoomIndirect(gpu(), settings, truth);
+    std::printf("[ shell ] walls: indirect luminance %.3f x the sun room's truth\n", ratio);
+    EXPECT_GE(ratio, 0.90);
+    EXPECT_LE(ratio, 1.10);
 }
 
-TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTracer) {
+TEST_F(FailureModesGuard, AtBalancedARoomInsideASunlitShellGetsNoMoreLightThanItDid) {
+    // The same at `balanced`: 2.92 × the truth, the mips letting the shell's sunlit outside in
+    // through the sheets. Target 0.90-1.10, which `walls` meets (above).
+    const Image truth = readPfm(std::string(VCT_SOURCE_DIR) + "/assets/reference/sun-room-indirect.pfm");
+    RenderSettings settings = *findRenderPreset("balanced");
+    settings.image.width = settings.image.height = 128;
+    const double ratio = bench::measureShelledRoomIndirect(gpu(), settings, truth);
+    std::printf("[ shell ] balanced: indirect luminance %.3f x the sun room's truth\n", ratio);
+    EXPECT_GE(ratio, 0.90);
+    EXPECT_LE(ratio, 3.1) << "regression guard; target 1.10";
+}
+
+TEST_F(FailureModesGuard, WithTheMipsAloneIndirectBrightnessAgreesAcrossResolutionsAndWithThePathTracer) {
     // The first bounce against its own truth (paths cut after one bounce): the later bounces repeat
-    // its error, and `vct bench` measures the converged light's drift at its preset.
+    // its error, and `vct bench` measures the converged light's drift at its preset. Targets: spread
+    // 0.10, which ray visibility is held to (WithRayVisibilityTheFirstBounceHoldsAcrossResolutions),
+    // and each resolution 0.90-1.10 of the truth.
     const Scene scene = loadScene("cornell");
     RenderSettings settings = smallSettings(32, 32);
     settings.image.supersample = 2;
@@ -245,17 +249,20 @@ TEST_F(FailureModes, IndirectBrightnessAgreesAcrossResolutionsAndWithThePathTrac
         highest = std::max(highest, result.meanLuminance);
         sum += result.meanLuminance;
         const double ratio = result.meanLuminance / truth.meanLuminance;
-        EXPECT_GE(ratio, kBounds.groundTruthRatioLow) << result.voxelResolution;
-        EXPECT_LE(ratio, kBounds.groundTruthRatioHigh) << result.voxelResolution;
+        EXPECT_GE(ratio, kGuards.groundTruthRatioLow) << result.voxelResolution << "³ (regression guard; target 0.90)";
+        EXPECT_LE(ratio, kGuards.groundTruthRatioHigh) << result.voxelResolution;
     }
     const double spread = (highest - lowest) / (sum / double(results.size()));
     std::printf("[ drift ] spread over resolutions: %.3f\n", spread);
-    EXPECT_LE(spread, kBounds.resolutionSpread);
+    EXPECT_LE(spread, kGuards.resolutionSpread) << "regression guard; target 0.10";
 }
 
-TEST_F(FailureModes, TheFirstBounceIsMeasuredAgainstItsOwnTruth) {
+TEST_F(FailureModesGuard, AtBalancedTheFirstBounceStaysNearItsOwnTruth) {
     // At `balanced` and the references' 128², one bounce against the path tracer's paths cut after
     // one bounce. Measured (luminance ratio, relMSE): cornell 1.023 / 0.123, terrain 1.001 / 2.17.
+    // The luminance bounds lie within the target, 0.90-1.10; the relMSE bounds record today's error
+    // (target: the full image's 0.05, which the bench measures; the terrain's first bounce is a few
+    // bright pixels under its spheres).
     // Cornell's 1.02 is two errors that cancel: its walls let a fifth of the cones out of the
     // room, and with walls that do not (optical depth filtered in the chains, or the border
     // normalized) it reads 1.25 or 1.13. Terrain read 1.148 / 3.02 before oblique surfaces were
@@ -277,22 +284,23 @@ TEST_F(FailureModes, TheFirstBounceIsMeasuredAgainstItsOwnTruth) {
         EXPECT_TRUE(first.finite) << bound.scene;
         EXPECT_GE(first.error.luminanceRatio, bound.low) << bound.scene;
         EXPECT_LE(first.error.luminanceRatio, bound.high) << bound.scene;
-        EXPECT_LE(first.error.relMse, bound.relMse) << bound.scene;
+        EXPECT_LE(first.error.relMse, bound.relMse) << bound.scene << " (regression guard)";
     }
 }
 
 TEST_F(FailureModes, ALoneSunlitPlaneGetsNoIndirectLightFromItself) {
-    // Its true indirect light is 0: no light reaches it twice.
+    // Its true indirect light is 0: no light reaches it twice. Target: 2 % of its direct light.
     for (uint32_t voxels : {32u, 64u}) {
         const bench::SelfIllumination self = bench::measureSelfIllumination(gpu(), smallSettings(32, voxels));
         std::printf("[ self ] lone plane at %u³: direct %.4f, indirect %.5f (%.2f %%)\n", voxels, self.directLuminance,
                     self.indirectLuminance, 100.0 * self.ratio());
         EXPECT_GT(self.directLuminance, 0.1);
-        EXPECT_LE(self.ratio(), kBounds.selfIllumination) << voxels;
+        EXPECT_LE(self.ratio(), 0.02) << voxels;
     }
 }
 
 TEST_F(FailureModes, SmallCameraAndLightMovesChangeTheImageLittle) {
+    // Target: a 1 mm step changes at most 2 % of the image (relative L1); measured 0.3-0.8 %.
     const Scene scene = loadScene("cornell");
     for (RenderMode mode : {RenderMode::Full, RenderMode::Indirect}) {
         RenderSettings settings = smallSettings(64, 64);
@@ -303,8 +311,8 @@ TEST_F(FailureModes, SmallCameraAndLightMovesChangeTheImageLittle) {
         const bench::FlickerMeasurement step = bench::measureFlicker(gpu(), scene, settings, 0.001f, 0.001f);
         std::printf("[ flicker ] %s, 1 mm steps: camera %.4f, light %.4f\n", renderModeName(mode), step.cameraChange,
                     step.lightChange);
-        EXPECT_LE(step.cameraChange, kBounds.cameraStepChange) << renderModeName(mode);
-        EXPECT_LE(step.lightChange, kBounds.lightStepChange) << renderModeName(mode);
+        EXPECT_LE(step.cameraChange, 0.02) << renderModeName(mode);
+        EXPECT_LE(step.lightChange, 0.02) << renderModeName(mode);
     }
 }
 

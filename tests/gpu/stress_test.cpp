@@ -25,10 +25,6 @@ struct Tolerances {
     double intensityLinearity = 1e-3;   // relative L1 between image / intensity at 1e-4 … 1e6 and at 1
     double flatSceneIndirect = 0.01;    // indirect / direct mean of a lone plane (truth: 0)
     double wallOnVoxelBoundary = 0.10;  // lit-room mean, wall on a voxel boundary vs. inside a voxel
-    // Mean inside a closed block / usual view's (truth 0) with the mips alone: a regression guard
-    // (0.44 today: from inside, cones meet the block's faces whole, lit outside and all). The
-    // target, 0.05, is ray visibility's (WithRayVisibilityACameraInsideAClosedBlock…).
-    double insideGeometry = 0.52;
 };
 constexpr Tolerances kTolerances;
 
@@ -89,6 +85,7 @@ Scene transformedCornell(float scale, glm::vec3 offset) {
 }
 
 class Stress : public GpuTest {};
+class StressGuard : public Stress {};
 
 TEST_F(Stress, DegenerateTrianglesChangeNothing) {
     const Scene cornell = loadScene("cornell");
@@ -269,17 +266,17 @@ TEST_F(Stress, GrazingViewsStayFiniteAndBounded) {
     }
 }
 
-TEST_F(Stress, CameraInsideAClosedBlockSeesNoDirectLightAndBoundedIndirectLight) {
+TEST_F(StressGuard, WithTheMipsAloneACameraInsideAClosedBlockSeesNoMoreLightThanItDid) {
     // The shadow maps get the block's inside right; the cones do not: the block's faces are thinner
     // than a voxel, and cones starting on their inner side see the lit outer side's voxels (the
-    // light leak of FailureModes.ThinWallsLeak…, at its worst in a closed box), and one-sided voxels
-    // are transparent from behind. Bounded (kTolerances.insideGeometry) so that it cannot grow
-    // unnoticed; ray visibility (below) is what meets the target.
+    // light leak of FailureModesGuard.WithTheMipsAloneThinWallsLeak…, at its worst in a closed box),
+    // and one-sided voxels are transparent from behind. Measured 0.44 of the usual view's light;
+    // bounded so that it cannot grow unnoticed. The target, 5 %, is ray visibility's (below).
     const bench::InsideClosedBlock seen = bench::measureInsideClosedBlock(gpu(), smallSettings(32, 64));
     std::printf("[ stress ] inside the tall block: %.5f, direct %.5f (usual view %.4f)\n", seen.insideLuminance,
                 seen.insideDirect, seen.usualLuminance);
     EXPECT_EQ(seen.insideDirect, 0.0);
-    EXPECT_LE(seen.ratio(), kTolerances.insideGeometry);
+    EXPECT_LE(seen.ratio(), 0.52) << "regression guard; target 0.05";
 }
 
 TEST_F(Stress, WithRayVisibilityACameraInsideAClosedBlockSeesUnderFivePercentOfTheRoomsLight) {

@@ -30,6 +30,7 @@ class TurnedCones : public GpuTest {
 protected:
     Scene scene = loadScene("cornell");
 };
+class TurnedConesGuard : public GpuTest {};
 
 TEST_F(TurnedCones, TheFirstFrameIsTheFixedRingsAndEachTurnIsOneMoreStillFrame) {
     Renderer fixed(gpu(), scene, turnedSettings(1));
@@ -94,7 +95,7 @@ TEST_F(TurnedCones, NewShadingStartsTheMeanAnew) {
     EXPECT_TRUE(sameImages(fixed.readImage(), fixedImage)) << "the fixed ring's image again";
 }
 
-TEST_F(TurnedCones, TheSunRoomsStreaksAverageOut) {
+TEST_F(TurnedConesGuard, TheSunRoomsStreaksAverageOut) {
     // The sun room at `walls` (128², indirect light, against its path-traced reference): six fixed
     // 60° cones with rays drew the small sunlit patch on the floor as streaks on the back wall
     // (indirect relMSE 0.165 in the bench's full image); its ring turned over four still frames
@@ -118,7 +119,7 @@ TEST_F(TurnedCones, TheSunRoomsStreaksAverageOut) {
                     error[turned]);
     }
     EXPECT_LT(error[1], 0.7 * error[0]);
-    EXPECT_LT(error[1], 0.12) << "regression guard";
+    EXPECT_LT(error[1], 0.12) << "regression guard; target: the bench's full relMSE 0.05";
 }
 
 }  // namespace
