@@ -77,15 +77,15 @@ const std::vector<PresetSummary>& presetSummaries() {
     // From the committed bench run (docs/bench.json: lavapipe, 2 cores, 128×128, over the eight
     // built-in scenes); a test holds these to it.
     static const std::vector<PresetSummary> summaries = {
-        {"fast", "32³, six 60° cones, one trace per 4×4 pixels, 16 samples a pixel over still frames", 15.04, 0.05075},
-        {"balanced", "64³, six 40° cones, one trace per 4×4 pixels, 16 samples a pixel over still frames", 17.51,
+        {"fast", "32³, six 60° cones, one trace per 4×4 pixels, 16 samples a pixel over still frames", 15.81, 0.05075},
+        {"balanced", "64³, six 40° cones, one trace per 4×4 pixels, 16 samples a pixel over still frames", 18.02,
          0.03379},
-        {"quality", "balanced with a 4096² sun shadow map", 17.66, 0.03324},
+        {"quality", "balanced with a 4096² sun shadow map", 17.07, 0.03324},
         {"walls",
          "balanced with ray visibility and 60° cones, one beam of each a still frame over 16 turns: no light "
          "through walls; light changes ~5× slower",
-         20.11, 0.01953},
-        {"classic", "the seed's six 60° cones (0.25 + 5 × 0.15) at 128³, 2×2 samples, every sample traced", 759.96,
+         20.15, 0.01902},
+        {"classic", "the seed's six 60° cones (0.25 + 5 × 0.15) at 128³, 2×2 samples, every sample traced", 741.38,
          0.05833},
     };
     return summaries;
