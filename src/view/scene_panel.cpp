@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "scene/scene_limits.h"
+
 namespace vct {
 
 const char* lightTypeName(LightType type) {
@@ -24,10 +26,11 @@ static std::string lightLabel(const Light& light, size_t index) {
 }
 
 // Intensity drags in steps of about 0.5 % of the value, so 0.01 cd and 100 000 lux both move smoothly;
-// never below zero (the renderer refuses negative light).
+// never below zero (the renderer refuses negative light), and up to what the loader accepts: a cap
+// of its own (it was 10⁶) would clamp a brighter lamp from a file at the first touch.
 static void intensityDrag(const char* label, float& intensity) {
-    ImGui::DragFloat(label, &intensity, std::max(0.005f * intensity, 0.001f), 0.0f, 1e6f, "%.3f",
-                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat(label, &intensity, std::max(0.005f * intensity, 0.001f), 0.0f, float(kBrightestRepresentable),
+                     "%.3f", ImGuiSliderFlags_AlwaysClamp);
 }
 
 static void sunNode(ViewerState& state, Light& sun) {
