@@ -27,7 +27,7 @@ static std::string lightLabel(const Light& light, size_t index) {
 
 // Intensity drags in steps of about 0.5 % of the value, so 0.01 cd and 100 000 lux both move smoothly;
 // never below zero (the renderer refuses negative light), and up to what the loader accepts: a cap
-// of its own (it was 10⁶) would clamp a brighter lamp from a file at the first touch.
+// of its own would clamp a brighter lamp from a file at the first touch.
 static void intensityDrag(const char* label, float& intensity) {
     ImGui::DragFloat(label, &intensity, std::max(0.005f * intensity, 0.001f), 0.0f, float(kBrightestRepresentable),
                      "%.3f", ImGuiSliderFlags_AlwaysClamp);

@@ -17,7 +17,8 @@ namespace {
 
 // Regression guards (suite FailureModesGuard): bounds at today's figures, with the mips alone or
 // at `balanced`, so that a regression shows; each names its target, which ray visibility (`walls`)
-// is held to in suite FailureModes. Measured at 32² with converged bounces, the mips alone:
+// is held to in suite FailureModes where a test here can measure it (the full image's error is the
+// bench's). Measured at 32² with converged bounces, the mips alone:
 // - leak (truth 0), the wall on a voxel boundary, a third and half a voxel in: a single sheet
 //   facing the lit room 41 / 40 / 33 % of the lit room's mean, facing the dark room 0.4 / 0.6 /
 //   2.6 % (but the lit room then loses a third of its light through it), two faces 1 cm apart 5.9 /
