@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "gpu/pass_uses.h"
 #include "gpu/vk_check.h"
 #include "io/exit_immediately.h"
 
@@ -83,26 +84,11 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags as
     vkCmdPipelineBarrier2(commands, &dependency);
 }
 
-void copyForHost(VkCommandBuffer commands, VkBuffer source, VkBuffer destination,
+void copyForHost(VkCommandBuffer commands, const Buffer& source, const Buffer& destination,
                  std::initializer_list<VkBufferCopy> regions) {
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    vkCmdCopyBuffer(commands, source, destination, uint32_t(regions.size()), regions.begin());
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                  VK_ACCESS_2_HOST_READ_BIT);
-}
-
-void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = srcStage;
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstStageMask = dstStage;
-    barrier.dstAccessMask = dstAccess;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(commands, &dependency);
+    PassUses().use(source, access::copySource).use(destination, access::transferWrite).record(commands);
+    vkCmdCopyBuffer(commands, source.buffer, destination.buffer, uint32_t(regions.size()), regions.begin());
+    PassUses().use(destination, access::hostRead).record(commands);
 }
 
 void drawFullScreen(VkCommandBuffer commands, VkImageView target, uint32_t width, uint32_t height,

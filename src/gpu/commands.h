@@ -1,4 +1,4 @@
-// Recording and submitting work, and the barriers between passes.
+// Recording and submitting work.
 #pragma once
 
 #include <initializer_list>
@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "gpu/context.h"
+#include "gpu/resources.h"
 
 namespace vct {
 
@@ -20,19 +21,16 @@ void submitAndWait(GpuContext& context, const std::function<void(VkCommandBuffer
 // its memory, so the process ends with a clear error (exitImmediately) instead of unwinding.
 void waitForFence(GpuContext& context, VkFence fence);
 
-// One image layout transition with synchronization2 masks.
+// One image layout transition with synchronization2 masks, for work outside the passes' declared
+// uses (gpu/pass_uses.h): a texture's mip chain built level by level, the swapchain's images.
 void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags aspect, VkImageLayout oldLayout,
                   VkImageLayout newLayout, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess, uint32_t baseMip = 0,
                   uint32_t mipCount = VK_REMAINING_MIP_LEVELS);
 
-// A global memory barrier (buffer and image writes of one pass made visible to the next).
-void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
-
-// Copies what compute shaders wrote into `source` (`regions`) to the host-visible `destination`,
-// readable by the host once the commands have run (e.g. a work list's count).
-void copyForHost(VkCommandBuffer commands, VkBuffer source, VkBuffer destination,
+// Copies what the GPU wrote into `source` (`regions`) to the host-visible `destination`, readable
+// by the host once the commands have run (e.g. a work list's count).
+void copyForHost(VkCommandBuffer commands, const Buffer& source, const Buffer& destination,
                  std::initializer_list<VkBufferCopy> regions);
 
 // One full-screen triangle (fullscreen.vert) into `target`, every pixel of it written: begins

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 
 namespace vct {
 namespace {
@@ -34,11 +35,10 @@ glm::vec4 decodeTexel(VkFormat format, const uint8_t* bytes) {
 
 }  // namespace
 
-std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, uint32_t mip,
-                                   VkImageLayout currentLayout) {
+std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, uint32_t mip) {
     if (mip >= image.desc.mipLevels)
         throw Error(std::string("readImage3D: '") + image.desc.debugName + "' has no mip level " + std::to_string(mip));
-    if (currentLayout == VK_IMAGE_LAYOUT_UNDEFINED)
+    if (image.sync.layout == VK_IMAGE_LAYOUT_UNDEFINED)
         throw Error(std::string("readImage3D: '") + image.desc.debugName + "' holds no defined contents");
     const VkFormat format = image.desc.format;
     const uint32_t bytesPerTexel = texelBytes(format);
@@ -48,19 +48,12 @@ std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, u
     Buffer staging(context, texels * bytesPerTexel, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
 
     submitAndWait(context, [&](VkCommandBuffer commands) {
-        imageBarrier(commands, image.image, image.aspect, currentLayout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                     VK_ACCESS_2_TRANSFER_READ_BIT, mip, 1);
+        PassUses().use(image, access::copySource).use(staging, access::transferWrite).record(commands);
         VkBufferImageCopy region{};
         region.imageSubresource = {image.aspect, mip, 0, 1};
         region.imageExtent = extent;
-        vkCmdCopyImageToBuffer(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &region);
-        imageBarrier(commands, image.image, image.aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, currentLayout,
-                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                     VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, mip, 1);
-        // The copy's writes to the host-visible buffer, made visible to the host.
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+        vkCmdCopyImageToBuffer(commands, image.image, access::copySource.layout, staging.buffer, 1, &region);
+        PassUses().use(staging, access::hostRead).record(commands);
     });
 
     std::vector<glm::vec4> result(texels);
@@ -78,12 +71,10 @@ std::vector<uint32_t> readBufferWords(GpuContext& context, const Buffer& buffer,
     if (count == 0) return words;
     Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     submitAndWait(context, [&](VkCommandBuffer commands) {
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        PassUses().use(buffer, access::copySource).use(staging, access::transferWrite).record(commands);
         const VkBufferCopy region{0, 0, bytes};
         vkCmdCopyBuffer(commands, buffer.buffer, staging.buffer, 1, &region);
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+        PassUses().use(staging, access::hostRead).record(commands);
     });
     std::memcpy(words.data(), staging.mapped, bytes);
     return words;

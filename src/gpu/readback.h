@@ -11,10 +11,9 @@ namespace vct {
 
 // The texels of one mip level of a 3D image as floats, index x + w·(y + h·z). Handles
 // R8G8B8A8_UNORM, R16G16B16A16_SFLOAT and R32G32B32A32_SFLOAT (anything else is a vct::Error).
-// `currentLayout` is the layout the image is in; it is left in that layout afterwards, and all
-// earlier GPU writes to it are waited for.
-std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, uint32_t mip,
-                                   VkImageLayout currentLayout);
+// Read after every earlier GPU write to it (gpu/pass_uses.h); the next pass that uses the image
+// moves it back to the layout it needs.
+std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, uint32_t mip);
 
 // The first `count` 32-bit words of a device-local buffer made with TRANSFER_SRC usage, after all
 // earlier GPU writes to it.

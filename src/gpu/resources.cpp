@@ -59,6 +59,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         std::swap(buffer, other.buffer);
         std::swap(size, other.size);
         std::swap(mapped, other.mapped);
+        std::swap(sync, other.sync);
         std::swap(device_, other.device_);
         std::swap(memory_, other.memory_);
     }
@@ -148,6 +149,7 @@ GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
         std::swap(desc, other.desc);
         std::swap(aspect, other.aspect);
         std::swap(memorySize, other.memorySize);
+        std::swap(sync, other.sync);
         std::swap(device_, other.device_);
         std::swap(memory_, other.memory_);
     }

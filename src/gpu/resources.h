@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "gpu/access.h"
 #include "gpu/context.h"
 
 namespace vct {
@@ -24,6 +25,9 @@ public:
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceSize size = 0;
     void* mapped = nullptr;
+    // What the queue last did with it (pass_uses.h); mutable: passes that only read a buffer still
+    // record that they did.
+    mutable SyncState sync;
 
 private:
     void release();
@@ -57,6 +61,7 @@ public:
     ImageDesc desc;
     VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
     VkDeviceSize memorySize = 0;
+    mutable SyncState sync;  // as Buffer::sync
 
 private:
     void release();

@@ -4,7 +4,7 @@
 
 #include <glm/gtc/packing.hpp>
 
-#include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "luminance.h"
 #include "render/settings.h"
 
@@ -15,20 +15,12 @@ BounceConvergence::BounceConvergence(GpuContext& context) : mean_(context, 8, VK
 void BounceConvergence::record(VkCommandBuffer commands, const GpuImage& radiance) {
     // The radiance volume's coarsest level is one texel: the mean over the grid.
     const uint32_t top = radiance.desc.mipLevels - 1;
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, top,
-                 1);
+    PassUses().use(radiance, access::copySource).use(mean_, access::transferWrite).record(commands);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, top, 0, 1};
     region.imageExtent = {1, 1, 1};
-    vkCmdCopyImageToBuffer(commands, radiance.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, mean_.buffer, 1, &region);
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, top, 1);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                  VK_ACCESS_2_HOST_READ_BIT);
+    vkCmdCopyImageToBuffer(commands, radiance.image, access::copySource.layout, mean_.buffer, 1, &region);
+    PassUses().use(mean_, access::hostRead).record(commands);
 }
 
 bool BounceConvergence::settled() {

@@ -4,6 +4,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "surface_planes.h"
 #include "work_list.h"
 
@@ -17,27 +18,6 @@ GpuImage image(GpuContext& context, uint32_t width, uint32_t height, const char*
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     desc.debugName = name;
     return GpuImage(context, desc);
-}
-
-// Every texel of `image` is about to be rewritten by compute: the last frame's reads must be done.
-void beginWriting(VkCommandBuffer commands, const GpuImage& image) {
-    imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-}
-
-void finishWriting(VkCommandBuffer commands, const GpuImage& image, VkPipelineStageFlags2 readers) {
-    imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, readers, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-}
-
-// What a pass that appends to a work list wrote, visible to the pass over it and its indirect dispatch.
-void listWritten(VkCommandBuffer commands) {
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-                      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 // Reset by a transfer each frame, and copied out for the frame's statistics.
@@ -94,22 +74,16 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     const GpuImage& lastGBufferNormal = gbufferRedrawn ? gbuffer.lastNormal : gbuffer.normal;
     const std::array<const GpuImage*, 3> nowImages{&now.light, &now.positions, &now.normals};
 
-    if (frameCount_ == 0)  // the last frame's images are bound, unread, before anything wrote them
-        for (const GpuImage* image : {&last.light, &last.positions, &last.normals, &lastSamples})
-            imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-
     // The lists start empty, once the last frame's dispatches have read them.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE);
+    PassUses()
+        .use(tracedList, access::transferWrite)
+        .use(edgeList, access::transferWrite)
+        .use(fallbackList, access::transferWrite)
+        .record(commands);
     const glsl::WorkListHeader empty{0u, 1u, 1u, 0u};
     vkCmdUpdateBuffer(commands, tracedList.buffer, 0, sizeof(empty), &empty);
     vkCmdUpdateBuffer(commands, edgeList.buffer, 0, sizeof(empty), &empty);
     vkCmdUpdateBuffer(commands, fallbackList.buffer, 0, sizeof(empty), &empty);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     const uint32_t groupLimit = context_.properties.limits.maxComputeWorkGroupCount[0];
     struct {  // diffuse_reproject.comp's Push block
@@ -119,6 +93,15 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     // Steps 2 and 4: the listed samples' cones, into `target`'s texels, a representative's at its block.
     auto traceListed = [&](const GpuImage& target, uint32_t targetDownscale, const Buffer& listed, const Buffer& list) {
         const Pipeline& traceList = traceListPipeline.get(skipEmptySpace);
+        PassUses uses;
+        for (const GpuImage* light : volumes.tracedLight()) uses.use(*light, access::computeRead);
+        uses.use(volumes.normal, access::computeRead)
+            .use(gbuffer.position, access::computeSampled)
+            .use(gbuffer.normal, access::computeSampled)
+            .use(target, access::computeWrite)
+            .use(listed, access::computeRead)
+            .use(list, access::computeRead | access::indirectArguments)
+            .record(commands);
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, traceList.pipeline);
         DescriptorPush()
             .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes.directionalViews(), volumeSampler,
@@ -141,7 +124,11 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     };
 
     // 1. The representatives: the last frame's light where it holds, the rest listed.
-    for (const GpuImage* image : nowImages) beginWriting(commands, *image);
+    PassUses reprojecting;
+    for (const GpuImage* image : nowImages) reprojecting.use(*image, access::computeWrite, Contents::Discard);
+    for (const GpuImage* image : {&last.light, &last.positions, &last.normals, &gbuffer.position, &gbuffer.normal})
+        reprojecting.use(*image, access::computeSampled);
+    reprojecting.use(tracedSamples, access::computeWrite).use(tracedList, access::computeWrite).record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline.pipeline);
     DescriptorPush()
         .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -158,14 +145,19 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, reprojectPipeline);
     vkCmdPushConstants(commands, reprojectPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatch(commands, (reducedWidth + 7) / 8, (reducedHeight + 7) / 8, 1);
-    listWritten(commands);
 
     // 2. The listed representatives' cones.
     traceListed(now.light, downscale_, tracedSamples, tracedList);
-    for (const GpuImage* image : nowImages) finishWriting(commands, *image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 
     // 3. Every sample upsampled, or listed.
-    beginWriting(commands, nowSamples);
+    PassUses upsampling;
+    for (const GpuImage* image : nowImages) upsampling.use(*image, access::computeSampled);
+    upsampling.use(gbuffer.position, access::computeSampled)
+        .use(gbuffer.normal, access::computeSampled)
+        .use(nowSamples, access::computeWrite, Contents::Discard)
+        .use(edgeSamples, access::computeWrite)
+        .use(edgeList, access::computeWrite)
+        .record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, upsamplePipeline.pipeline);
     DescriptorPush()
         .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -182,9 +174,20 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
     // One invocation per cell between four representatives, from the one before the first.
     const uint32_t cellsWide = reducedWidth + 1, cellsHigh = reducedHeight + 1;
     vkCmdDispatch(commands, (cellsWide + 7) / 8, (cellsHigh + 7) / 8, 1);
-    listWritten(commands);
 
     // 3b. The listed samples' own light of the last frame, or listed again to trace.
+    PassUses()
+        .use(nowSamples, access::computeWrite)
+        .use(fallbackSamples, access::computeWrite)
+        .use(fallbackList, access::computeWrite)
+        .use(edgeSamples, access::computeRead)
+        .use(edgeList, access::computeRead | access::indirectArguments)
+        .use(gbuffer.position, access::computeSampled)
+        .use(gbuffer.normal, access::computeSampled)
+        .use(lastSamples, access::computeSampled)
+        .use(lastGBufferPosition, access::computeSampled)
+        .use(lastGBufferNormal, access::computeSampled)
+        .record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline.pipeline);
     DescriptorPush()
         .buffer(glsl::FRAME_BINDING, frameConstants, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -201,17 +204,14 @@ void DiffuseConesPass::record(VkCommandBuffer commands, VkBuffer frameConstants,
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, edgeHistoryPipeline);
     vkCmdPushConstants(commands, edgeHistoryPipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(reuse), &reuse);
     vkCmdDispatchIndirect(commands, edgeList.buffer, 0);
-    listWritten(commands);
 
     // 4. The listed samples' own cones, into the texels step 3 left.
     traceListed(nowSamples, 1u, fallbackSamples, fallbackList);
-    finishWriting(commands, nowSamples,
-                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 
     // The lists' counts, for the frame's statistics.
     constexpr VkDeviceSize header = sizeof(glsl::WorkListHeader);
-    copyForHost(commands, tracedList.buffer, listHeaders.buffer, {{0, 0, header}});
-    copyForHost(commands, fallbackList.buffer, listHeaders.buffer, {{0, header, header}});
+    copyForHost(commands, tracedList, listHeaders, {{0, 0, header}});
+    copyForHost(commands, fallbackList, listHeaders, {{0, header, header}});
 
     if (!haveHistory_) stillFrames_ = kRefreshPeriod;  // every block traced: settled at once
     else if (!cameraStill) stillFrames_ = 0;

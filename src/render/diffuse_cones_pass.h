@@ -21,7 +21,7 @@ struct DiffuseConesPass {
     // rounded up.
     DiffuseConesPass(GpuContext& context, uint32_t samplesWide, uint32_t samplesHigh, uint32_t downscale);
 
-    // Leaves diffuse() in SHADER_READ_ONLY_OPTIMAL for the shading pass's fragment shader.
+    // Writes diffuse(), which the shading pass samples.
     // `viewProjection` is the G-buffer's: the next frame finds this frame's light through it.
     // `cameraStill`: the camera did not move since the last frame, though the samples may have
     // (ShadingSettings::stillSamples): the reused light still counts towards settled().

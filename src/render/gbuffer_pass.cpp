@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "bindings.h"
-#include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 
 namespace vct {
 
@@ -52,24 +52,14 @@ GBufferPass::GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t ta
 }
 
 void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants) {
-    const VkPipelineStageFlags2 colorStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
-    // This frame draws over the images of the frame before last.
+    // This frame draws over the images of the frame before last, every pixel.
     std::swap(position, lastPosition);
     std::swap(normal, lastNormal);
-    if (recorded++ == 0)  // bound for reading before anything drew them
-        for (const GpuImage* last : {&lastPosition, &lastNormal})
-            imageBarrier(commands, last->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    ++recorded;
     GpuImage* targets[kColorTargets] = {&position, &normal, &baseColor, &emissive};
-    for (GpuImage* target : targets)
-        imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_NONE, colorStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    imageBarrier(commands, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                 VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
-                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    PassUses drawn;
+    for (GpuImage* target : targets) drawn.use(*target, access::colorAttachment, Contents::Discard);
+    drawn.use(depth, access::depthAttachment, Contents::Discard).record(commands);
 
     VkRenderingAttachmentInfo colors[kColorTargets];
     for (uint32_t i = 0; i < kColorTargets; ++i) {
@@ -121,12 +111,6 @@ void GBufferPass::record(VkCommandBuffer commands, const SceneGpu& scene, VkBuff
         if (alphaPipeline.pipeline != VK_NULL_HANDLE) drawRanges(alphaPipeline, true);
     }
     vkCmdEndRendering(commands);
-
-    for (GpuImage* target : targets)
-        imageBarrier(commands, target->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, colorStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 }  // namespace vct

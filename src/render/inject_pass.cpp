@@ -4,6 +4,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "surface_planes.h"
 
 namespace vct {
@@ -29,10 +30,18 @@ void InjectPass::forgetAreaLights(uint32_t occupiedVoxels) {
 
 void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const LightBuffers& lights,
                         const ShadowPass& shadows, VoxelVolumes& volumes, bool addGathered) {
-    // Level 0 is rewritten whole; the cones that read it (the last frame's, a gather's) must be done.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    // Level 0 is rewritten whole, after the cones that read it (the last frame's, a gather's).
+    PassUses uses;
+    for (const GpuImage* voxels : {&volumes.albedoOpacity, &volumes.normal, &volumes.emission})
+        uses.use(*voxels, access::computeRead);
+    for (const GpuImage* maps : {&shadows.sunMaps, &shadows.localMaps, &shadows.areaMaps})
+        uses.use(*maps, access::computeSampled);
+    uses.use(volumes.radiance, access::computeWrite);
+    if (addGathered) uses.use(volumes.gatheredLight, access::computeRead);
+    uses.use(volumes.occupiedVoxels, access::computeRead)
+        .use(volumes.occupiedDispatch, access::computeRead | access::indirectArguments)
+        .use(areaLightCache_, access::computeWrite)
+        .record(commands);
     const Pipeline& chosen = areaLightsCached_ ? cachedAreaPipeline : pipeline;
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, chosen.pipeline);
     // Without a bounce target (one bounce) nothing is added: the radiance volume stands in.
@@ -58,9 +67,6 @@ void InjectPass::record(VkCommandBuffer commands, VkBuffer frameConstants, const
     vkCmdPushConstants(commands, chosen.layout, VK_SHADER_STAGE_ALL, 0, sizeof(add), &add);
     vkCmdDispatchIndirect(commands, volumes.occupiedDispatch.buffer, 0);
     areaLightsCached_ = areaLightCapacity_ > 0;  // what this injection wrote, the next ones read
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants, const VoxelVolumes& volumes,
@@ -73,6 +79,13 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
                                      context_.properties.limits.maxComputeWorkGroupCount[0]);
     if (groups == 0) return;
     const Pipeline& gather = gatherPipeline.get(skipEmptySpace);
+    PassUses uses;
+    for (const GpuImage* voxels : {&volumes.albedoOpacity, &volumes.normal}) uses.use(*voxels, access::computeRead);
+    for (const GpuImage* light : volumes.tracedLight()) uses.use(*light, access::computeRead);
+    uses.use(volumes.gatheredLight, access::computeWrite)
+        .use(volumes.occupiedVoxels, access::computeRead)
+        .use(volumes.occupiedDispatch, access::computeRead)
+        .record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather.pipeline);
     const VkSampler sampler = volumes.sampler.sampler;
     DescriptorPush()
@@ -89,8 +102,6 @@ void InjectPass::recordGather(VkCommandBuffer commands, VkBuffer frameConstants,
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, gather);
     vkCmdPushConstants(commands, gather.layout, VK_SHADER_STAGE_ALL, 0, sizeof(slice), &slice);
     vkCmdDispatch(commands, groups, 1, 1);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 float radianceStorageScale(const std::vector<Light>& lights, const Scene& scene, float voxelSize) {

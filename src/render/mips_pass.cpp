@@ -4,6 +4,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "work_list.h"
 
 namespace vct {
@@ -32,7 +33,11 @@ void MipsPass::record(VkCommandBuffer commands, const VoxelVolumes& volumes, boo
 void MipsPass::recordSurfacePlanes(VkCommandBuffer commands, const VoxelVolumes& volumes) {
     const GpuImage& planes = volumes.surfacePlanes;
     if (planes.image == VK_NULL_HANDLE) return;
-    // Radiance level 0 is read as the injection left it (the chains' passes before ended on a barrier).
+    PassUses()
+        .use(volumes.radiance, access::computeRead)
+        .use(volumes.normal, access::computeRead)
+        .use(planes, access::computeWrite)
+        .record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline.pipeline);
     DescriptorPush()
         .storageImage(glsl::VOXEL_RADIANCE_BINDING, mipView(volumes.radiance, 0))
@@ -41,9 +46,6 @@ void MipsPass::recordSurfacePlanes(VkCommandBuffer commands, const VoxelVolumes&
         .push(context_, commands, VK_PIPELINE_BIND_POINT_COMPUTE, surfacePlanesPipeline);
     const uint32_t groups = (planes.desc.extent.width + 3) / 4;
     vkCmdDispatch(commands, groups, groups, groups);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     recordIsotropic(commands, planes);
 }
 
@@ -54,6 +56,12 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
     const uint32_t levels = directional[0].desc.mipLevels;
     for (uint32_t level = 0; level < levels; ++level) {
         const Pipeline& levelPipeline = level == 0 ? directionalFromScenePipeline : directionalPipeline;
+        // Each level is built from the one before (the first from the radiance's level 0).
+        PassUses uses;
+        uses.use(volume, access::computeRead).use(volumes.normal, access::computeRead);
+        for (uint32_t axis = 0; axis < 3; ++axis)
+            uses.use(directional[axis], access::computeWrite).use(volumes.leavingSurfaces[axis], access::computeWrite);
+        uses.record(commands);
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, levelPipeline.pipeline);
         const uint32_t size = std::max(directional[0].desc.extent.width >> level, 1u);
         for (uint32_t axis = 0; axis < 3; ++axis) {
@@ -75,15 +83,14 @@ void MipsPass::recordDirectional(VkCommandBuffer commands, const VoxelVolumes& v
             const uint32_t lines = size * size;
             vkCmdDispatch(commands, (lines + glsl::WORK_LIST_GROUP_SIZE - 1) / glsl::WORK_LIST_GROUP_SIZE, 1, 1);
         }
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     }
 }
 
 void MipsPass::recordIsotropic(VkCommandBuffer commands, const GpuImage& volume) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     for (uint32_t level = 1; level < volume.desc.mipLevels; ++level) {
+        // Each level from the one before.
+        PassUses().use(volume, access::computeWrite).record(commands);
         DescriptorPush()
             .storageImage(glsl::FINER_LEVEL_BINDING, mipView(volume, level - 1))
             .storageImage(glsl::COARSER_LEVEL_BINDING, mipView(volume, level))
@@ -91,10 +98,6 @@ void MipsPass::recordIsotropic(VkCommandBuffer commands, const GpuImage& volume)
         const uint32_t size = std::max(volume.desc.extent.width >> level, 1u);
         const uint32_t groups = (size + 3) / 4;
         vkCmdDispatch(commands, groups, groups, groups);
-        // Each level is read by the next one.
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     }
 }
 

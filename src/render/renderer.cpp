@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
 #include "render/frame_constants.h"
@@ -396,7 +397,7 @@ FrameStats Renderer::renderFrame() {
             const ShadeInputs inputs{frameConstants_.buffer,
                                      sceneGpu_->materials.buffer,
                                      lightTable_.buffers(),
-                                     reducedDiffuse ? diffuseConesPass_->diffuse().view : VK_NULL_HANDLE,
+                                     reducedDiffuse ? &diffuseConesPass_->diffuse() : nullptr,
                                      variant,
                                      sky_.get()};
             shadePass_->record(commands, inputs, *gbufferPass_, *shadowPass_, *volumes_);
@@ -450,8 +451,7 @@ bool Renderer::skipsEmptySpace() const {
 }
 
 void Renderer::recordOccupiedCount(VkCommandBuffer commands) {
-    copyForHost(commands, volumes_->occupiedDispatch.buffer, occupiedHeader_.buffer,
-                {{0, 0, sizeof(glsl::WorkListHeader)}});
+    copyForHost(commands, volumes_->occupiedDispatch, occupiedHeader_, {{0, 0, sizeof(glsl::WorkListHeader)}});
 }
 
 Image Renderer::readImage() {
@@ -461,14 +461,10 @@ Image Renderer::readImage() {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {width, height, 1};
-        const VkImage source = output().image;
-        imageBarrier(commands, source, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                     VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-        vkCmdCopyImageToBuffer(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
-        imageBarrier(commands, source, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+        const GpuImage& source = output();
+        PassUses().use(source, access::copySource).use(readback, access::transferWrite).record(commands);
+        vkCmdCopyImageToBuffer(commands, source.image, access::copySource.layout, readback.buffer, 1, &region);
+        PassUses().use(readback, access::hostRead).record(commands);
     });
     Image image;
     image.width = width;

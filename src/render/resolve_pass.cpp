@@ -1,7 +1,7 @@
 #include "render/resolve_pass.h"
 
 #include "bindings.h"
-#include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 
 namespace vct {
 
@@ -20,11 +20,10 @@ ResolvePass::ResolvePass(GpuContext& context, uint32_t targetWidth, uint32_t tar
 void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled, float frameShare) {
     // The last mean is kept where this frame adds to it, and may be discarded where it replaces it.
     const bool keeps = frameShare < 1.0f;
-    imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                 keeps ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, keeps ? VK_ACCESS_2_MEMORY_WRITE_BIT : VK_ACCESS_2_NONE,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | (keeps ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT : 0));
+    PassUses()
+        .use(supersampled, access::computeRead)
+        .use(resolved, access::computeWrite, keeps ? Contents::Keep : Contents::Discard)
+        .record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
     DescriptorPush()
         .sampledImage(glsl::SUPERSAMPLED_BINDING, supersampled.view, pointSampler.sampler, VK_IMAGE_LAYOUT_GENERAL)
@@ -36,10 +35,6 @@ void ResolvePass::record(VkCommandBuffer commands, const GpuImage& supersampled,
     } push{supersample, frameShare};
     vkCmdPushConstants(commands, pipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDispatch(commands, (width + 7) / 8, (height + 7) / 8, 1);
-    imageBarrier(commands, resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                 VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
-                 VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 }  // namespace vct

@@ -2,6 +2,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "render/cone_tracing_pipeline.h"
 #include "render/ltc_table.h"
 #include "surface_planes.h"
@@ -45,16 +46,23 @@ const Pipeline& ShadePass::pipeline(const ShadeVariant& variant) {
 
 void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
                        const ShadowPass& shadows, const VoxelVolumes& volumes) {
-    // After whatever read the last frame's image: the resolve, a copy or the viewer's present pass.
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE,
-                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    // Drawn over whatever read the last frame's image: the resolve, a copy or the viewer's present pass.
+    // Without reduced diffuse cones the shader never samples their binding: the base colour stands in.
+    const GpuImage& reducedDiffuse = inputs.reducedDiffuse ? *inputs.reducedDiffuse : gbuffer.baseColor;
+    PassUses uses;
+    uses.use(radiance, access::colorAttachment, Contents::Discard);
+    for (const GpuImage* light : volumes.tracedLight()) uses.use(*light, access::fragmentRead);
+    uses.use(volumes.albedoOpacity, access::fragmentRead).use(volumes.normal, access::fragmentRead);
+    for (const GpuImage* maps : {&shadows.sunMaps, &shadows.localMaps, &shadows.areaMaps})
+        uses.use(*maps, access::fragmentSampled);
+    for (const GpuImage* target : {&gbuffer.position, &gbuffer.normal, &gbuffer.baseColor, &gbuffer.emissive})
+        uses.use(*target, access::fragmentSampled);
+    if (inputs.reducedDiffuse) uses.use(reducedDiffuse, access::fragmentSampled);
+    uses.record(commands);
     drawFullScreen(commands, radiance.view, width, height, [&] {
         const Pipeline& variant = pipeline(inputs.variant);
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant.pipeline);
         const VkSampler volumeSampler = volumes.sampler.sampler;
-        // Without reduced diffuse cones the shader never samples binding 13: the base colour stands in.
-        const VkImageView reducedDiffuse = inputs.reducedDiffuse ? inputs.reducedDiffuse : gbuffer.baseColor.view;
         DescriptorPush()
             .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes.directionalViews(), volumeSampler,
                            VK_IMAGE_LAYOUT_GENERAL)
@@ -75,7 +83,7 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(glsl::VOXEL_NORMAL_BINDING, volumes.normal.view, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImage(glsl::SURFACE_PLANES_BINDING, volumes.surfacePlanesView(), volumeSampler,
                           VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImage(glsl::DIFFUSE_SAMPLES_BINDING, reducedDiffuse, pointSampler.sampler)
+            .sampledImage(glsl::DIFFUSE_SAMPLES_BINDING, reducedDiffuse.view, pointSampler.sampler)
             .sampledImage(glsl::SUN_SHADOW_DEPTHS_BINDING, shadows.sunMaps.view, pointSampler.sampler)
             .sampledImage(glsl::LOCAL_SHADOW_DEPTHS_BINDING, shadows.localMaps.view, pointSampler.sampler)
             .sampledImage(glsl::G_EMISSIVE_BINDING, gbuffer.emissive.view, pointSampler.sampler)
@@ -84,14 +92,6 @@ void ShadePass::record(VkCommandBuffer commands, const ShadeInputs& inputs, cons
             .sampledImage(glsl::SKY_BINDING, inputs.sky->view(), inputs.sky->sampler())
             .push(context_, commands, VK_PIPELINE_BIND_POINT_GRAPHICS, variant);
     });
-    // GENERAL, as the resolved image is left: the resolve, a read-back copy and the viewer's
-    // present pass all read the frame's output from it.
-    imageBarrier(commands, radiance.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                 VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT |
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
 }  // namespace vct

@@ -35,7 +35,7 @@ struct ShadeInputs {
     VkBuffer frameConstants;
     VkBuffer materials;
     LightBuffers lights;
-    VkImageView reducedDiffuse = VK_NULL_HANDLE;  // DiffuseConesPass::diffuse, when the cones run reduced
+    const GpuImage* reducedDiffuse = nullptr;  // DiffuseConesPass::diffuse, when the cones run reduced
     ShadeVariant variant;
     const SkyImage* sky = nullptr;  // required
 };

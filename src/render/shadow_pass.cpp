@@ -8,6 +8,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "lights.h"
 #include "render/camera.h"
 
@@ -176,15 +177,12 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
                         VkBuffer viewsBuffer, ShadowArraySet redraw) {
     GpuImage* arrays[kShadowArrayCount] = {&sunMaps, &localMaps, &areaMaps};
     redraw |= kAllShadowArrays & ~drawn;  // a new array has no maps yet
-    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
-        if ((redraw & (1u << array)) == 0) continue;
-        const VkImageLayout previous =
-            (drawn & (1u << array)) != 0 ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
-        imageBarrier(commands, arrays[array]->image, VK_IMAGE_ASPECT_DEPTH_BIT, previous,
-                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
-                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
-    }
+    // The redrawn arrays are drawn into after the passes that sampled them; the passes that sample
+    // them next declare so.
+    PassUses drawing;
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array)
+        if ((redraw & (1u << array)) != 0) drawing.use(*arrays[array], access::depthAttachment);
+    drawing.record(commands);
 
     // Opaque materials need no fragment shader; alpha-tested ones (if any) switch to the second
     // pipeline after them in every layer, and back for the next layer.
@@ -254,14 +252,6 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     for (uint32_t array = 0; array < kShadowArrayCount; ++array)
         if ((redraw & (1u << array)) != 0 && layers[array] == 0) renderLayer(*arrays[array], 0, -1);
 
-    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
-        if ((redraw & (1u << array)) == 0) continue;
-        imageBarrier(commands, arrays[array]->image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    }
     drawn |= redraw;
 }
 

@@ -69,7 +69,7 @@ struct ShadowPass {
     Sampler compareSampler;
     Pipeline pipeline;         // depth only: opaque materials
     Pipeline alphaPipeline;    // MASK and BLEND materials: discards where the base colour's alpha says
-    ShadowArraySet drawn = 0;  // arrays whose layouts are valid for sampling
+    ShadowArraySet drawn = 0;  // arrays drawn at least once
 
 private:
     GpuContext& context_;

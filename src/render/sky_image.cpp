@@ -6,6 +6,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 
 namespace vct {
 namespace {
@@ -94,16 +95,10 @@ SkyImage::SkyImage(GpuContext& context, const EnvironmentMap* map) : mapped_(map
         offset += VkDeviceSize(level.values() / 4) * texelBytes;
     }
     submitAndWait(context, [&](VkCommandBuffer commands) {
-        imageBarrier(commands, image_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                     VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, desc.mipLevels);
-        vkCmdCopyBufferToImage(commands, staging.buffer, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        PassUses().use(image_, access::transferWrite, Contents::Discard).record(commands);
+        vkCmdCopyBufferToImage(commands, staging.buffer, image_.image, access::transferWrite.layout,
                                uint32_t(regions.size()), regions.data());
-        imageBarrier(commands, image_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                     VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, 0, desc.mipLevels);
+        PassUses().use(image_, access::shadersSampled).record(commands);
     });
     // Around the horizon the image wraps; at the poles it ends.
     VkSamplerCreateInfo info = linearClampSampler();

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 
 namespace vct {
 namespace {
@@ -70,13 +71,13 @@ GpuImage uploadTexture(GpuContext& context, uint32_t width, uint32_t height, con
         if (desc.mipLevels > 1)
             toLayout(commands, image, 0, desc.mipLevels - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                     VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                     VK_ACCESS_2_TRANSFER_READ_BIT, access::kShaders, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         toLayout(commands, image, desc.mipLevels - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT, access::kShaders, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     });
+    // Sampled by the G-buffer's fragment shaders and the voxelizer's compute shader alike.
+    settle(image, access::shadersSampled);
     return image;
 }
 

@@ -4,6 +4,7 @@
 
 #include "directional_chains.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "render/voxel_grid_fit.h"
 
 namespace vct {
@@ -79,25 +80,21 @@ VoxelVolumes::VoxelVolumes(GpuContext& context, const ResourceSettings& resource
                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                               false);
 
-    // Zero (no light yet: the first bounce gathers nothing; no voxel listed), then GENERAL for
-    // good: storage writes and sampled reads alike use it, so no pass changes a layout.
+    // Zero (no light yet: the first bounce gathers nothing; no voxel listed), then GENERAL.
     submitAndWait(context, [&](VkCommandBuffer commands) {
         const glsl::WorkListHeader none{0u, 1u, 1u, 0u};
+        PassUses().use(occupiedDispatch, access::transferWrite).record(commands);
         vkCmdUpdateBuffer(commands, occupiedDispatch.buffer, 0, sizeof(none), &none);
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
         const VkClearColorValue zero{};
         const VkImageSubresourceRange everything{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
+        PassUses cleared, general;
+        for (const GpuImage* image : images()) cleared.use(*image, access::transferWrite, Contents::Discard);
+        cleared.record(commands);
         for (const GpuImage* image : images()) {
-            imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                         VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
             vkCmdClearColorImage(commands, image->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &everything);
-            imageBarrier(commands, image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                         VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+            general.use(*image, access::computeRead);
         }
+        general.record(commands);
     });
 }
 
@@ -114,6 +111,13 @@ VkImageView VoxelVolumes::surfacePlanesView() const {
 std::vector<VkImageView> VoxelVolumes::lightLevelZeroViews() const {
     const VkImageView radianceLevelZero = radiance.mipViews.empty() ? radiance.view : radiance.mipViews[0];
     return {radianceLevelZero, gatheredLight.image != VK_NULL_HANDLE ? gatheredLight.view : radianceLevelZero};
+}
+
+std::vector<const GpuImage*> VoxelVolumes::tracedLight() const {
+    std::vector<const GpuImage*> light = {&radiance};
+    for (const GpuImage& chain : directional) light.push_back(&chain);
+    if (surfacePlanes.image != VK_NULL_HANDLE) light.push_back(&surfacePlanes);
+    return light;
 }
 
 std::vector<const GpuImage*> VoxelVolumes::images() const {

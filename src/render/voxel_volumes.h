@@ -1,8 +1,9 @@
 // Every 3D image of the voxel data, owned in one place with its format: what the voxelizer writes
 // (albedo and opacity, normal, emission, and the list of occupied voxels), the light injected into
 // it (radiance with its mip chain), the directional chains of anisotropic voxels and the next
-// bounce's target. Each image is cleared and moved to GENERAL once, at creation, and stays there (a
-// copy leaves it for the copy only): the passes order their accesses.
+// bounce's target. Each image is cleared at creation and lives in GENERAL, where storage writes and
+// sampled reads alike use it (a read-back's copy moves it out until the next pass); the passes
+// declare their uses of it (gpu/pass_uses.h).
 #pragma once
 
 #include <vector>
@@ -68,6 +69,8 @@ struct VoxelVolumes {
     // The surface planes' view; without ray visibility the radiance volume stands in (the shaders
     // then never sample it).
     VkImageView surfacePlanesView() const;
+    // The light cones sample: the radiance, its directional chains and the surface planes that exist.
+    std::vector<const GpuImage*> tracedLight() const;
     // Every image above that exists, in voxelVolumeDescs() order.
     std::vector<const GpuImage*> images() const;
     // The two level-0 images of light (radiance, then the gathered light or radiance again where

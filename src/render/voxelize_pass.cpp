@@ -7,6 +7,7 @@
 #include "bindings.h"
 #include "error.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "render/renderer_limits.h"
 #include "render/voxelize_reference.h"
 #include "scene/material_textures.h"
@@ -257,27 +258,18 @@ std::vector<VkBuffer> VoxelizePass::accumulationBuffers() const {
 
 void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, VoxelVolumes& volumes) {
     const uint32_t resolution = params.grid.resolution;
-    // The previous frame's resolve may still read the sums: wait for it before clearing.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                  VK_ACCESS_2_NONE);
+    // The sums start at zero and the occupied list empty, once whatever read them last is done.
+    PassUses cleared;
+    for (const Buffer& channel : accumulation) cleared.use(channel, access::transferWrite);
+    cleared.use(volumes.occupiedDispatch, access::transferWrite).record(commands);
     for (Buffer& channel : accumulation) vkCmdFillBuffer(commands, channel.buffer, 0, VK_WHOLE_SIZE, 0u);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    // The resolve rewrites every texel of the scene voxels and the occupied list: earlier reads of
-    // them (the last light passes' indirect dispatches among them) must be done. The list starts
-    // empty.
-    memoryBarrier(commands,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                  VK_ACCESS_2_NONE);
     const glsl::WorkListHeader none{0u, 1u, 1u, 0u};
     vkCmdUpdateBuffer(commands, volumes.occupiedDispatch.buffer, 0, sizeof(none), &none);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
+    // Chunks only add to the sums (atomics): they need no barrier between them.
+    PassUses summed;
+    for (const Buffer& channel : accumulation) summed.use(channel, access::computeWrite);
+    summed.record(commands);
     if (!workChunks.empty()) {
         vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.pipeline);
         vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, voxelizePipeline.layout, glsl::TEXTURES_SET,
@@ -299,11 +291,15 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
                            &chunkParams);
         vkCmdDispatch(commands, chunk.groupsPerRow, chunk.rows, 1);
     }
-    // Chunks only add to the sums (atomics): they need no barrier between them.
-    if (!workChunks.empty())
-        memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-
+    // The resolve rewrites every texel of the scene voxels and lists the occupied ones.
+    PassUses resolved;
+    for (const Buffer& channel : accumulation) resolved.use(channel, access::computeRead);
+    for (const GpuImage* written : {&volumes.albedoOpacity, &volumes.normal, &volumes.emission, &volumes.radiance})
+        resolved.use(*written, access::computeWrite);
+    if (volumes.gatheredLight.image != VK_NULL_HANDLE) resolved.use(volumes.gatheredLight, access::computeWrite);
+    resolved.use(volumes.occupiedVoxels, access::computeWrite)
+        .use(volumes.occupiedDispatch, access::computeWrite)
+        .record(commands);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolvePipeline.pipeline);
     DescriptorPush()
         .buffers(glsl::VOXEL_ACCUMULATION_BINDING, accumulationBuffers())
@@ -317,12 +313,6 @@ void VoxelizePass::record(VkCommandBuffer commands, const SceneGpu& sceneGpu, Vo
     vkCmdPushConstants(commands, resolvePipeline.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
     const uint32_t groups = resolution / 4;
     vkCmdDispatch(commands, groups, groups, groups);
-
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 }  // namespace vct

@@ -2,6 +2,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "gpu/vk_check.h"
 
 namespace vct {
@@ -148,9 +149,7 @@ void PresentPass::createFramebuffers(const Swapchain& swapchain) {
 
 void PresentPass::begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, VkRect2D area,
                         const GpuImage& radiance, const TonemapParams& params) {
-    // The renderer's resolve wrote the image in an earlier submission: make it visible here.
-    memoryBarrier(commands, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    PassUses().use(radiance, access::fragmentRead).record(commands);
     VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     info.renderPass = renderPass;
     info.framebuffer = framebuffers_.at(imageIndex);

@@ -11,6 +11,7 @@
 
 #include "bindings.h"
 #include "gpu/commands.h"
+#include "gpu/pass_uses.h"
 #include "gpu/pipelines.h"
 #include "gpu/readback.h"
 #include "gpu_test.h"
@@ -56,7 +57,7 @@ protected:
         return normals[size_t(x) + kResolution * (size_t(y) + kResolution * z)];
     }
 
-    // Uploads a level-0 volume (RGBA16F) from the CPU into `image`, which lives in GENERAL.
+    // Uploads a level-0 volume (RGBA16F) from the CPU into `image`.
     void upload(VkCommandBuffer commands, Buffer& staging, const GpuImage& image,
                 const std::vector<glm::vec4>& values) {
         std::vector<uint16_t> halves;
@@ -64,17 +65,11 @@ protected:
             for (int c = 0; c < 4; ++c) halves.push_back(glm::packHalf1x16(v[c]));
         staging = Buffer(gpu(), halves.size() * 2, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
         std::memcpy(staging.mapped, halves.data(), halves.size() * 2);
-        // The volumes live in GENERAL (VoxelVolumes); a copy wants TRANSFER_DST, then back.
-        imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, 1);
+        PassUses().use(image, access::transferWrite).record(commands);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {kResolution, kResolution, kResolution};
-        vkCmdCopyBufferToImage(commands, staging.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        imageBarrier(commands, image.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, 0, 1);
+        vkCmdCopyBufferToImage(commands, staging.buffer, image.image, access::transferWrite.layout, 1, &region);
     }
 
     // Uploads level 0 (and the voxels' normals: zero unless a test sets them, which makes every
@@ -130,6 +125,9 @@ protected:
         const SkyImage sky(context, nullptr);  // the uniform sky of frame.environment
         const uint32_t count = uint32_t(probes.size());
         submitAndWait(context, [&](VkCommandBuffer commands) {
+            PassUses uses;
+            for (const GpuImage* light : volumes->tracedLight()) uses.use(*light, access::computeRead);
+            uses.record(commands);
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
             DescriptorPush()
                 .sampledImages(glsl::DIRECTIONAL_VOXELS_BINDING, volumes->directionalViews(), volumes->sampler.sampler,
@@ -187,7 +185,7 @@ TEST_F(ConeTracing, MipsEqualCpuDownsampleWithinFloat16Rounding) {
                     coarser[x + size * (y + size * z)] = sum * 0.125f;
                 }
         expected = coarser;
-        const std::vector<glm::vec4> actual = readImage3D(gpu(), volume(), level, VK_IMAGE_LAYOUT_GENERAL);
+        const std::vector<glm::vec4> actual = readImage3D(gpu(), volume(), level);
         ASSERT_EQ(actual.size(), expected.size());
         for (size_t i = 0; i < actual.size(); ++i)
             for (int c = 0; c < 4; ++c)  // each level rounds to float16 once more: allow a few ulps

@@ -54,7 +54,7 @@ std::vector<glm::vec4> injectedLight(const Scene& scene) {
     Renderer renderer(gpu(), scene, settings);
     EXPECT_NEAR(fitVoxelGrid(scene.bounds(), kResolution).voxelSize, 0.1f, 1e-6f);
     renderer.renderFrame();
-    return readImage3D(gpu(), renderer.volumes().radiance, 0, VK_IMAGE_LAYOUT_GENERAL);
+    return readImage3D(gpu(), renderer.volumes().radiance, 0);
 }
 
 glm::vec4 voxelAt(const std::vector<glm::vec4>& volume, int x, int y, int z) {

@@ -45,7 +45,7 @@ float expectFiniteVolume(Renderer& renderer, const char* what) {
     std::vector<const GpuImage*> volumes = {&renderer.volumes().radiance};
     for (const GpuImage* volume : volumes)
         for (uint32_t level = 0; level < volume->desc.mipLevels; ++level)
-            for (const glm::vec4& voxel : readImage3D(gpu(), *volume, level, VK_IMAGE_LAYOUT_GENERAL))
+            for (const glm::vec4& voxel : readImage3D(gpu(), *volume, level))
                 for (int c = 0; c < 4; ++c) {
                     EXPECT_TRUE(std::isfinite(voxel[c])) << what << ", level " << level;
                     if (!std::isfinite(voxel[c])) return largest;

@@ -106,9 +106,9 @@ VoxelImages voxelizeOnGpu(const Scene& scene, const glsl::VoxelGridParams& grid,
             timer.end(commands);
         });
     VoxelImages images;
-    images.albedoOpacity = readImage3D(context, volumes.albedoOpacity, 0, VK_IMAGE_LAYOUT_GENERAL);
-    images.normal = readImage3D(context, volumes.normal, 0, VK_IMAGE_LAYOUT_GENERAL);
-    images.emission = readImage3D(context, volumes.emission, 0, VK_IMAGE_LAYOUT_GENERAL);
+    images.albedoOpacity = readImage3D(context, volumes.albedoOpacity, 0);
+    images.normal = readImage3D(context, volumes.normal, 0);
+    images.emission = readImage3D(context, volumes.emission, 0);
     const std::vector<uint32_t> header = readBufferWords(context, volumes.occupiedDispatch, 4);
     std::memcpy(&images.occupiedDispatch, header.data(), sizeof(images.occupiedDispatch));
     images.occupied = readBufferWords(context, volumes.occupiedVoxels, images.occupiedDispatch.count);
