@@ -6,12 +6,14 @@
 #include "render/setting_table.h"
 #include "scene/default_light.h"
 #include "scene/environment_map.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 namespace {
 
 constexpr float kMinFov = 1.0f, kMaxFov = 179.0f;
-constexpr float kMaxIlluminance = 1e9f;
+// As bright as a glTF file's sun may be, and the viewer's slider goes.
+constexpr float kMaxIlluminance = float(kBrightestRepresentable);
 constexpr float kMaxRotation = 3600.0f;  // degrees: ten turns either way
 
 std::vector<SceneOverrideRow> makeSceneOverrideTable() {

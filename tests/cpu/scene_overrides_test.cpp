@@ -7,6 +7,7 @@
 #include "app/scene_overrides.h"
 #include "error.h"
 #include "readme_tables.h"
+#include "scene/scene_limits.h"
 
 namespace vct {
 namespace {
@@ -46,6 +47,15 @@ TEST(SceneOverrides, AWrongValueIsRefusedNamingItsOption) {
     EXPECT_NE(errorOf({"--light-dir", "0,0,0"}).find("--light-dir"), std::string::npos);
     EXPECT_NE(errorOf({"--light-intensity", "-1"}).find("--light-intensity"), std::string::npos);
     EXPECT_NE(errorOf({"--environment-rotation", "90"}).find("give --environment FILE.hdr too"), std::string::npos);
+}
+
+// A sun as bright as a glTF file's may be (and the viewer's slider goes): one limit, not two.
+TEST(SceneOverrides, TheSunsIlluminanceGoesAsHighAsTheLoadersLimit) {
+    const SceneOverrides brightest =
+        sceneOverridesFromArguments(sceneArguments({"--light-intensity", std::to_string(kBrightestRepresentable)}));
+    EXPECT_EQ(brightest.lightIntensity, float(kBrightestRepresentable));
+    EXPECT_NE(errorOf({"--light-intensity", std::to_string(kBrightestRepresentable * 10.0)}).find("--light-intensity"),
+              std::string::npos);
 }
 
 // The README's table of these options, between its markers. VCT_UPDATE_README=1 writes it instead.
