@@ -8,6 +8,7 @@
 #
 #   tools/make_references.sh [SCENE...]        (default: every built-in scene)
 #   BUILD=build-bench THREADS=1 tools/make_references.sh cornell
+#   tools/make_references.sh assets/scenes/courtyard.gltf     (a file's images are named for its stem)
 #
 # Images depend on the seed and the sample count, not on THREADS. The sample counts below reach
 # 1.5–8.6 % per-pixel noise on indirect light and under 1 % on direct light (the JSON sidecars
@@ -33,10 +34,11 @@ fi
 spp_for() {
     case "$1:$2" in
         terrain:indirect) echo 512 ;;
+        courtyard:indirect | landscape:indirect) echo 4096 ;;  # open to a black sky: cheap paths
         *:indirect-1bounce) echo 2048 ;;
         cornell-emissive:indirect) echo 1024 ;;  # paths find the lamp by NEE and MIS: less noise
         *:indirect) echo 2048 ;;
-        cornell-emissive:direct | panel-room:direct | tile-room:direct) echo 2048 ;;  # lamps sampled over their area
+        cornell-emissive:direct | panel-room:direct | tile-room:direct | courtyard:direct) echo 2048 ;;  # lamps sampled over their area
         *:direct) echo 512 ;;
     esac
 }
@@ -45,10 +47,11 @@ scenes=("$@")
 [[ ${#scenes[@]} -gt 0 ]] || scenes=(cornell cornell-emissive cornell-metal cornell-sun sun-room terrain panel-room tile-room)
 mkdir -p "$out"
 for scene in "${scenes[@]}"; do
+    name="$(basename "$scene" .gltf)"
     for mode in direct indirect; do
-        "$pathtrace" --scene "$scene" --mode "$mode" --width $size --height $size --spp "$(spp_for "$scene" "$mode")" \
-            --threads "$threads" --seed 1 --out "$out/$scene-$mode.pfm"
+        "$pathtrace" --scene "$scene" --mode "$mode" --width $size --height $size --spp "$(spp_for "$name" "$mode")" \
+            --threads "$threads" --seed 1 --out "$out/$name-$mode.pfm"
     done
     "$pathtrace" --scene "$scene" --mode indirect --max-depth 2 --width $size --height $size \
-        --spp "$(spp_for "$scene" indirect-1bounce)" --threads "$threads" --seed 1 --out "$out/$scene-indirect-1bounce.pfm"
+        --spp "$(spp_for "$name" indirect-1bounce)" --threads "$threads" --seed 1 --out "$out/$name-indirect-1bounce.pfm"
 done
