@@ -23,7 +23,8 @@ namespace vct {
 // rewritten), which lets a layout change skip them.
 enum class Contents { Keep, Discard };
 
-// Declare each resource once per step, with everything the step does with it.
+// A step declares each resource with everything it does with it (two kinds of use of a buffer: their
+// union, access::operator|); the same use declared twice (one image bound as two inputs) is harmless.
 class PassUses {
 public:
     PassUses& use(const Buffer& buffer, const Access& access);
