@@ -10,7 +10,7 @@ namespace vct {
 class BounceConvergence {
 public:
     explicit BounceConvergence(GpuContext& context);
-    // Records a copy of `radiance`'s coarsest level, after its mips, for the host; leaves it in GENERAL.
+    // Records a copy of `radiance`'s coarsest level, after its mips, for the host.
     void record(VkCommandBuffer commands, const GpuImage& radiance);
     // Once the recorded commands ran: whether the mean's luminance moved by less than
     // kBounceTolerance since the last reading (which it replaces).

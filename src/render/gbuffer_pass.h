@@ -10,7 +10,7 @@ namespace vct {
 struct GBufferPass {
     GBufferPass(GpuContext& context, const SceneGpu& scene, uint32_t width, uint32_t height);
 
-    // Leaves the targets in SHADER_READ_ONLY_OPTIMAL for the lighting pass.
+    // Draws the targets; the passes that sample them declare so (gpu/pass_uses.h).
     void record(VkCommandBuffer commands, const SceneGpu& scene, VkBuffer frameConstants);
 
     uint32_t width, height;

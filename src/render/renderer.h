@@ -115,7 +115,7 @@ public:
     glm::vec3 sceneOrigin() const { return facts_.origin; }
     const glsl::VoxelGridParams& voxelGrid() const { return grid_; }  // in the local frame
     const VoxelVolumes& volumes() const { return *volumes_; }
-    // The last frame's image (RGBA32F, width × height, GENERAL layout): the resolved one, or at one
+    // The last frame's image (RGBA32F, width × height; declare its use, gpu/pass_uses.h): the resolved one, or at one
     // sample per pixel the shading pass's own, e.g. for a viewer to tone-map onto its swapchain.
     const GpuImage& output() const { return resolvesImage(settings_) ? resolvePass_->resolved : shadePass_->radiance; }
     // Device memory held by the renderer's images and buffers, in bytes.

@@ -12,7 +12,7 @@ namespace vct {
 struct ResolvePass {
     ResolvePass(GpuContext& context, uint32_t width, uint32_t height, uint32_t supersample);
 
-    // Reads `supersampled` (GENERAL); leaves `resolved` in GENERAL. `frameShare`: this frame's
+    // Reads `supersampled` into `resolved` (their uses declared). `frameShare`: this frame's
     // weight in the running mean, 1 / the frames averaged so far (1: the frame alone).
     void record(VkCommandBuffer commands, const GpuImage& supersampled, float frameShare = 1.0f);
 

@@ -43,7 +43,7 @@ struct ShadeInputs {
 struct ShadePass {
     ShadePass(GpuContext& context, uint32_t width, uint32_t height);
 
-    // Leaves `radiance` in GENERAL.
+    // Draws `radiance`; what reads it next (the resolve, a copy, the viewer) declares so.
     void record(VkCommandBuffer commands, const ShadeInputs& inputs, const GBufferPass& gbuffer,
                 const ShadowPass& shadows, const VoxelVolumes& volumes);
 

@@ -33,7 +33,7 @@ public:
     // One framebuffer per swapchain image; call again after the swapchain was recreated.
     void createFramebuffers(const Swapchain& swapchain);
 
-    // `radiance` is in GENERAL layout, written by earlier submissions (the renderer's frame).
+    // `radiance`: the renderer's frame, written by earlier submissions (its read is declared here).
     // The image fills `area` of the window (`extent`); the rest is cleared to black.
     void begin(VkCommandBuffer commands, uint32_t imageIndex, VkExtent2D extent, VkRect2D area,
                const GpuImage& radiance, const TonemapParams& params);
