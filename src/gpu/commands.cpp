@@ -91,6 +91,13 @@ void copyForHost(VkCommandBuffer commands, const Buffer& source, const Buffer& d
     PassUses().use(destination, access::hostRead).record(commands);
 }
 
+void copyForHost(VkCommandBuffer commands, const GpuImage& source, const Buffer& destination,
+                 const VkBufferImageCopy& region) {
+    PassUses().use(source, access::copySource).use(destination, access::transferWrite).record(commands);
+    vkCmdCopyImageToBuffer(commands, source.image, access::copySource.layout, destination.buffer, 1, &region);
+    PassUses().use(destination, access::hostRead).record(commands);
+}
+
 void drawFullScreen(VkCommandBuffer commands, VkImageView target, uint32_t width, uint32_t height,
                     const std::function<void()>& bind) {
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};

@@ -32,6 +32,10 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageAspectFlags as
 // by the host once the commands have run (e.g. a work list's count).
 void copyForHost(VkCommandBuffer commands, const Buffer& source, const Buffer& destination,
                  std::initializer_list<VkBufferCopy> regions);
+// The same for `region` of an image (a level, a layer); the next pass that uses the image moves it
+// back to the layout it needs.
+void copyForHost(VkCommandBuffer commands, const GpuImage& source, const Buffer& destination,
+                 const VkBufferImageCopy& region);
 
 // One full-screen triangle (fullscreen.vert) into `target`, every pixel of it written: begins
 // rendering, sets the viewport, calls `bind` (the pipeline, its descriptors), draws, ends. The

@@ -7,7 +7,6 @@
 
 #include "error.h"
 #include "gpu/commands.h"
-#include "gpu/pass_uses.h"
 
 namespace vct {
 namespace {
@@ -48,12 +47,10 @@ std::vector<glm::vec4> readImage3D(GpuContext& context, const GpuImage& image, u
     Buffer staging(context, texels * bytesPerTexel, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
 
     submitAndWait(context, [&](VkCommandBuffer commands) {
-        PassUses().use(image, access::copySource).use(staging, access::transferWrite).record(commands);
         VkBufferImageCopy region{};
         region.imageSubresource = {image.aspect, mip, 0, 1};
         region.imageExtent = extent;
-        vkCmdCopyImageToBuffer(commands, image.image, access::copySource.layout, staging.buffer, 1, &region);
-        PassUses().use(staging, access::hostRead).record(commands);
+        copyForHost(commands, image, staging, region);
     });
 
     std::vector<glm::vec4> result(texels);
@@ -70,12 +67,7 @@ std::vector<uint32_t> readBufferWords(GpuContext& context, const Buffer& buffer,
     std::vector<uint32_t> words(count);
     if (count == 0) return words;
     Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-    submitAndWait(context, [&](VkCommandBuffer commands) {
-        PassUses().use(buffer, access::copySource).use(staging, access::transferWrite).record(commands);
-        const VkBufferCopy region{0, 0, bytes};
-        vkCmdCopyBuffer(commands, buffer.buffer, staging.buffer, 1, &region);
-        PassUses().use(staging, access::hostRead).record(commands);
-    });
+    submitAndWait(context, [&](VkCommandBuffer commands) { copyForHost(commands, buffer, staging, {{0, 0, bytes}}); });
     std::memcpy(words.data(), staging.mapped, bytes);
     return words;
 }

@@ -4,7 +4,7 @@
 
 #include <glm/gtc/packing.hpp>
 
-#include "gpu/pass_uses.h"
+#include "gpu/commands.h"
 #include "luminance.h"
 #include "render/settings.h"
 
@@ -15,12 +15,10 @@ BounceConvergence::BounceConvergence(GpuContext& context) : mean_(context, 8, VK
 void BounceConvergence::record(VkCommandBuffer commands, const GpuImage& radiance) {
     // The radiance volume's coarsest level is one texel: the mean over the grid.
     const uint32_t top = radiance.desc.mipLevels - 1;
-    PassUses().use(radiance, access::copySource).use(mean_, access::transferWrite).record(commands);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, top, 0, 1};
     region.imageExtent = {1, 1, 1};
-    vkCmdCopyImageToBuffer(commands, radiance.image, access::copySource.layout, mean_.buffer, 1, &region);
-    PassUses().use(mean_, access::hostRead).record(commands);
+    copyForHost(commands, radiance, mean_, region);
 }
 
 bool BounceConvergence::settled() {

@@ -9,7 +9,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gpu/commands.h"
-#include "gpu/pass_uses.h"
 #include "gpu/vk_check.h"
 #include "render/camera.h"
 #include "render/frame_constants.h"
@@ -461,10 +460,7 @@ Image Renderer::readImage() {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {width, height, 1};
-        const GpuImage& source = output();
-        PassUses().use(source, access::copySource).use(readback, access::transferWrite).record(commands);
-        vkCmdCopyImageToBuffer(commands, source.image, access::copySource.layout, readback.buffer, 1, &region);
-        PassUses().use(readback, access::hostRead).record(commands);
+        copyForHost(commands, output(), readback, region);
     });
     Image image;
     image.width = width;
