@@ -47,6 +47,7 @@ struct GpuLight {
     vec4 positionRange;     // xyz world position, w range (0 = infinite)
     vec4 direction;         // xyz direction the light travels
     vec4 spotShadow;        // x inner cone angle, y outer cone angle, z first shadow view, w shadow view count
+    vec4 cascades;          // a sun: x its first cascade's view (the finest), y their count (0: none)
     // An area light (LIGHT_AREA) reads them as: rgb mean radiance; xyz its shadow cube's eye, w its
     // radius; xyz its front normal, w its area; x its first emitter triangle, y their count.
 };

@@ -213,11 +213,9 @@ struct ShadowLookup {
     bool inMap;
 };
 
-ShadowLookup shadowLookup(GpuLight light, vec3 position, vec3 normal, float distanceToLight) {
-    uint viewIndex = uint(light.spotShadow.z);
-    if (uint(light.spotShadow.w) == 6u) viewIndex += cubeFace(position - light.positionRange.xyz);
+ShadowLookup lookupInView(ShadowView view, vec3 position, vec3 normal, float distanceToLight) {
     ShadowLookup lookup;
-    lookup.view = shadowViews[viewIndex];
+    lookup.view = view;
     lookup.texelWorld = lookup.view.params.z * (lookup.view.params.w > 0.5f ? distanceToLight : 1.0f);
     lookup.offsetPosition = position + normal * (frame.shadowNormalOffset * lookup.texelWorld);
     vec4 clip = lookup.view.viewProjection * vec4(lookup.offsetPosition, 1.0f);
@@ -226,6 +224,31 @@ ShadowLookup shadowLookup(GpuLight light, vec3 position, vec3 normal, float dist
                    all(lessThanEqual(lookup.centre.xy, vec2(1.0f))) && lookup.centre.z <= 1.0f;
     return lookup;
 }
+
+ShadowLookup shadowLookup(GpuLight light, vec3 position, vec3 normal, float distanceToLight) {
+    uint viewIndex = uint(light.spotShadow.z);
+    if (uint(light.spotShadow.w) == 6u) viewIndex += cubeFace(position - light.positionRange.xyz);
+    return lookupInView(shadowViews[viewIndex], position, normal, distanceToLight);
+}
+
+#ifdef SHADOW_BLOCKER_SEARCH
+// A sun's finest cascade (render/sun_cascades.h) that holds `position` with the filter's reach
+// around it, or `whole`, its scene-fitted map's lookup, where none does (a light without cascades).
+// Shading only: the voxels' light keeps the scene-fitted map, which the camera does not move.
+ShadowLookup finestCascade(GpuLight light, vec3 position, vec3 normal, ShadowLookup whole) {
+    uint first = uint(light.cascades.x), count = uint(light.cascades.y);
+    if (count == 0u) return whole;
+    // The blocker search reaches pcfRadius texels out and gathers a texel around each tap.
+    float reach = (frame.pcfRadius + 2.0f) / punctualShadowMapSize(SHADOW_ARRAY_SUN).x;
+    for (uint i = 0u; i < count; ++i) {
+        ShadowLookup lookup = lookupInView(shadowViews[first + i], position, normal, 1.0f);
+        if (lookup.inMap && all(greaterThanEqual(lookup.centre.xy, vec2(reach))) &&
+            all(lessThanEqual(lookup.centre.xy, vec2(1.0f - reach))))
+            return lookup;
+    }
+    return whole;
+}
+#endif
 
 bool castsShadows(GpuLight light) {
     return uint(light.spotShadow.w) > 0u && (frame.componentFlags & USE_SHADOWS) != 0u;
@@ -258,6 +281,9 @@ vec2 receiverDepthGradient(ShadowLookup lookup, vec3 normal) {
 float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float distanceToLight, bool filtered) {
     if (!castsShadows(light)) return 1.0f;
     ShadowLookup lookup = shadowLookup(light, position, normal, distanceToLight);
+#ifdef SHADOW_BLOCKER_SEARCH
+    if (filtered) lookup = finestCascade(light, position, normal, lookup);
+#endif
     if (!lookup.inMap) return 1.0f;
     uint array = uint(lookup.view.params.x);
     vec3 centre = lookup.centre;

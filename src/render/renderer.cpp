@@ -67,6 +67,7 @@ void Renderer::setGeometry(const Scene& scene) {
     SceneAnalysis analysis = analyzeScene(scene);
     facts_ = std::move(analysis.facts);
     const Scene& local = analysis.local;
+    triangleBoxes_ = triangleBoxes(local);
     grid_ = fitVoxelGrid(facts_.bounds, settings_.resources.voxelResolution);
     environment_ = scene.environment;
     environmentRotation_ = scene.environmentRotation;
@@ -130,20 +131,10 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     const std::vector<Light> all = withEnvironmentSun(lights);
     checkLightsCanBeRendered(all, sceneName_);
     lights_ = lights;
-    std::vector<Light> local = all;
-    for (Light& light : local) light.position -= facts_.origin;
-    const ShadowLayout previous = lightTable_.layout();
-    lightTable_.upload(context_, layoutShadows(local, facts_.areaLights, facts_.bounds, settings_));
-    const ShadowLayout& layout = lightTable_.layout();
-    // New arrays only when the number of shadow maps changed; otherwise they are redrawn in place.
-    if (!shadowPass_ || previous.sunLayers != layout.sunLayers || previous.localLayers != layout.localLayers ||
-        previous.areaLayers != layout.areaLayers) {
-        if (shadowPass_) vkDeviceWaitIdle(context_.device);
-        shadowPass_ = std::make_unique<ShadowPass>(context_, layout, settings_, *sceneGpu_);
-    }
-    // Only the maps whose views moved are redrawn: moving the sun in tile-room redrew its 48 lamp
-    // cube faces every frame.
-    staleShadowArrays_ |= changedShadowArrays(previous, layout);
+    shadowedLights_ = all;
+    for (Light& light : shadowedLights_) light.position -= facts_.origin;
+    const CascadeView view = cascadeView();
+    layOutShadows(layoutShadows(shadowedLights_, facts_.areaLights, facts_.bounds, settings_, &view));
     // The brightest emitter stands in for the scene's materials in the storage scale.
     Scene emitters;
     Material brightest;
@@ -155,6 +146,45 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     radianceScale_ = radianceStorageScale(all, emitters, grid_.voxelSize);
     stale_.shadows = true;
     stale_.radiance = true;
+}
+
+void Renderer::layOutShadows(ShadowLayout layout) {
+    const ShadowLayout previous = lightTable_.layout();
+    lightTable_.upload(context_, std::move(layout));
+    const ShadowLayout& now = lightTable_.layout();
+    // New arrays only when the number of shadow maps changed, or the sun's cascades need more layers
+    // than its array has (ShadowPass keeps room for all of them once there are any); otherwise the
+    // maps are redrawn in place.
+    const bool sunFits = shadowPass_ && now.sunLayers <= shadowPass_->sunMaps.desc.layers &&
+                         previous.sunLayers - previous.sunCascadeLayers == now.sunLayers - now.sunCascadeLayers;
+    if (!sunFits || previous.localLayers != now.localLayers || previous.areaLayers != now.areaLayers) {
+        if (shadowPass_) vkDeviceWaitIdle(context_.device);
+        shadowPass_ = std::make_unique<ShadowPass>(context_, now, settings_, *sceneGpu_);
+    }
+    // Only the maps whose views moved are redrawn: moving the sun in tile-room redrew its 48 lamp
+    // cube faces every frame.
+    staleShadowArrays_ |= changedShadowArrays(previous, now);
+}
+
+CascadeView Renderer::cascadeView() const {
+    CascadeView view;
+    view.camera = camera_;
+    view.camera.position -= facts_.origin;
+    view.aspect = float(settings_.image.width) / float(settings_.image.height);
+    view.imageHeight = settings_.image.height;
+    view.nearestGeometry = nearestBoxDistance(triangleBoxes_, view.camera.position);
+    return view;
+}
+
+void Renderer::refitSunCascades() {
+    const bool anySun = std::any_of(shadowedLights_.begin(), shadowedLights_.end(),
+                                    [](const Light& light) { return light.type == LightType::Directional; });
+    if (!anySun || settings_.resources.sunCascades == 0) return;
+    const CascadeView view = cascadeView();
+    ShadowLayout layout = layoutShadows(shadowedLights_, facts_.areaLights, facts_.bounds, settings_, &view);
+    if (changedShadowArrays(lightTable_.layout(), layout) == 0) return;
+    layOutShadows(std::move(layout));
+    stale_.shadows = true;  // the cascades' layers alone: the voxels' light stays as it is
 }
 
 void Renderer::setEnvironment(glm::vec3 environment) {
@@ -262,6 +292,7 @@ FrameStats Renderer::renderFrame() {
     const glm::mat4 camera = cameraViewProjection();
     if (camera != cameraViewProjection_) stale_.view = true;
     cameraViewProjection_ = camera;
+    if (stale_.view) refitSunCascades();  // a new view or image size
     stats.plan = planFrame(stale_, settings_);
     // A new view, light or geometry: the still frames' mean starts anew (new shading, in setShading).
     if (stale_.view || stats.plan.runs(Pass::Inject) || stats.plan.runs(Pass::Shadow)) framesAveraged_ = 0;

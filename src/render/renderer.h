@@ -28,6 +28,7 @@
 #include "render/shade_pass.h"
 #include "render/shadow_pass.h"
 #include "render/sky_image.h"
+#include "render/sun_cascades.h"
 #include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
 #include "scene/environment_sun.h"
@@ -123,6 +124,14 @@ public:
 
 private:
     void applyLights(const std::vector<Light>& lights);
+    // Holds `layout` in the light table, with shadow arrays large enough for it, and marks the maps
+    // whose views moved for the next shadow pass.
+    void layOutShadows(ShadowLayout layout);
+    // What the suns' cascades are fitted to: the camera and the image as they are now.
+    CascadeView cascadeView() const;
+    // After the camera moved or the image was resized: new cascades where they changed, redrawn on
+    // the next frame.
+    void refitSunCascades();
     // The resolve pass where resolvesImage() asks for one and there is none yet.
     void createResolvePassIfNeeded();
     // This frame's share of the resolved mean (ResolvePass::record); counts the frame into it and
@@ -153,9 +162,11 @@ private:
     SceneFacts facts_;       // the scene's frame (local = world − facts_.origin), area lights, sun, sky mean
     Camera camera_;
     std::vector<Light> lights_;
-    glm::vec3 environment_{0.0f};       // Scene::environment
-    float environmentRotation_ = 0.0f;  // Scene::environmentRotation
-    std::unique_ptr<SkyImage> sky_;     // Scene::environmentMap without its sun, or the placeholder
+    std::vector<Light> shadowedLights_;  // lights_ and the environment's sun, in the local frame
+    std::vector<Bounds> triangleBoxes_;  // of the scene's triangles, local: the camera's nearest geometry
+    glm::vec3 environment_{0.0f};        // Scene::environment
+    float environmentRotation_ = 0.0f;   // Scene::environmentRotation
+    std::unique_ptr<SkyImage> sky_;      // Scene::environmentMap without its sun, or the placeholder
     StaleInputs stale_;
     glm::mat4 cameraViewProjection_{0.0f};                 // the last frame's camera
     glm::mat4 gbufferViewProjection_{0.0f};                // ... with its samples moved, as the G-buffer holds it

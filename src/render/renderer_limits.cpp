@@ -89,7 +89,7 @@ void checkShadowMaps(const VkPhysicalDeviceLimits& limits, const std::string& de
                         std::to_string(side.value) + " fits");
 
     const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
-    for (const uint32_t layers : {layout.sunLayers, layout.localLayers, layout.areaLayers})
+    for (const uint32_t layers : {mostSunLayers(layout, settings), layout.localLayers, layout.areaLayers})
         if (layers > limits.maxImageArrayLayers)
             throw Error("scene '" + scene.name + "': its lights need " + std::to_string(layers) +
                         " shadow maps in one array (a point light needs six), more than " + deviceName +
@@ -128,11 +128,12 @@ RendererMemoryEstimate estimateRendererMemory(const Scene& scene, const RenderSe
                       voxelizeAccumulationBytes(settings.resources.voxelResolution, voxelizeChannels(scene));
 
     const ShadowLayout layout = layoutShadows(scene.lights, findAreaLights(scene), scene.bounds(), settings);
-    const uint64_t sunSide = layout.sunLayers ? settings.resources.sunShadowMapSize : 1;
+    const uint32_t sunLayers = mostSunLayers(layout, settings);
+    const uint64_t sunSide = sunLayers ? settings.resources.sunShadowMapSize : 1;
     const uint64_t localSide = layout.localLayers ? settings.resources.localShadowMapSize : 1;
     const uint64_t areaSide = layout.areaLayers ? settings.resources.areaShadowMapSize : 1;
     estimate.shadowMaps =
-        (std::max(layout.sunLayers, 1u) * sunSide * sunSide + std::max(layout.localLayers, 1u) * localSide * localSide +
+        (std::max(sunLayers, 1u) * sunSide * sunSide + std::max(layout.localLayers, 1u) * localSide * localSide +
          std::max(layout.areaLayers, 1u) * areaSide * areaSide) *
         kShadowTexel;
 

@@ -94,7 +94,11 @@ struct ResourceSettings {
     // Bounces of indirect light the voxels carry: 1 = the light sources' light reflected once,
     // N = N reflections, kConvergedBounces = every bounce, iterated until the light converges.
     uint32_t bounces = kConvergedBounces;
-    uint32_t sunShadowMapSize = 4096;    // directional lights
+    uint32_t sunShadowMapSize = 4096;  // directional lights
+    // The most view-fitted maps (cascades, sun_cascades.h) a sun gets beside its scene-fitted one,
+    // each of sunShadowMapSize²; as many as the camera's nearest geometry needs, none in most
+    // small scenes. 0: the scene-fitted map alone.
+    uint32_t sunCascades = 4;
     uint32_t localShadowMapSize = 1024;  // each spot light and each cube face of a point light
     // Each cube face of an area light: their shadows are soft, tested by rays that are spread over
     // the light, so a coarser map serves (eight lights at 1024² took 200 MB).

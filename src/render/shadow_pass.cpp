@@ -27,10 +27,19 @@ glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, fl
     return view;
 }
 
+// The bit of a redraw set (ShadowArraySet) that redraws `view`: its array's, or a sun's cascade's
+// own.
+ShadowArraySet redrawnWith(const ShadowLayout& layout, const glsl::ShadowView& view) {
+    const uint32_t array = uint32_t(view.params.x), layer = uint32_t(view.params.y);
+    const uint32_t firstCascade = layout.sunLayers - layout.sunCascadeLayers;
+    const bool cascade = array == uint32_t(ShadowArray::Sun) && layer >= firstCascade;
+    return cascade ? sunCascadeBit(layer - firstCascade) : shadowArrayBit(ShadowArray(array));
+}
+
 }  // namespace
 
 ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<AreaLight>& areaLights,
-                           const Bounds& sceneBounds, const RenderSettings& settings) {
+                           const Bounds& sceneBounds, const RenderSettings& settings, const CascadeView* cascadeView) {
     ShadowLayout layout;
     const glm::vec3 center = sceneBounds.center();
     const float radius = std::max(0.5f * glm::length(sceneBounds.extent()), 1e-6f);
@@ -106,7 +115,31 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
                                                glm::vec4(triangle.corners[2], triangle.radiance.b)});
         layout.lights.push_back(gpu);
     }
+    // The suns' cascades, in layers after every scene-fitted map: the camera moves them alone.
+    const uint32_t sunSize = settings.resources.sunShadowMapSize;
+    const std::vector<float> distances =
+        cascadeView ? cascadeDistances(*cascadeView, 2.0f * radius / float(sunSize), settings.resources.sunCascades)
+                    : std::vector<float>{};
+    for (size_t i = 0; i < lights.size() && !distances.empty(); ++i) {
+        if (lights[i].type != LightType::Directional) continue;
+        layout.lights[i].cascades = glm::vec4(float(layout.views.size()), float(distances.size()), 0.0f, 0.0f);
+        float nearDistance = 0.0f;
+        for (float farDistance : distances) {
+            glsl::ShadowView view =
+                cascadeShadowView(lights[i].direction, *cascadeView, nearDistance, farDistance, sceneBounds, sunSize);
+            view.params.x = float(ShadowArray::Sun);
+            view.params.y = float(layout.sunLayers++);
+            layout.views.push_back(view);
+            ++layout.sunCascadeLayers;
+            nearDistance = farDistance;
+        }
+    }
     return layout;
+}
+
+uint32_t mostSunLayers(const ShadowLayout& layout, const RenderSettings& settings) {
+    const uint32_t sceneFitted = layout.sunLayers - layout.sunCascadeLayers;  // one a sun
+    return sceneFitted * (1 + settings.resources.sunCascades);
 }
 
 ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings,
@@ -122,7 +155,10 @@ ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const Re
         desc.debugName = name;
         return GpuImage(context, desc);
     };
-    sunMaps = makeArray(layout.sunLayers, settings.resources.sunShadowMapSize, "sun shadow maps");
+    // Once a sun has cascades, room for as many as the camera may come to need: a camera moving
+    // nearer to geometry adds cascades without a new array (a stall) each time.
+    const uint32_t sunLayers = layout.sunCascadeLayers > 0 ? mostSunLayers(layout, settings) : layout.sunLayers;
+    sunMaps = makeArray(sunLayers, settings.resources.sunShadowMapSize, "sun shadow maps");
     localMaps = makeArray(layout.localLayers, settings.resources.localShadowMapSize, "local shadow maps");
     areaMaps = makeArray(layout.areaLayers, settings.resources.areaShadowMapSize, "area light shadow maps");
 
@@ -153,22 +189,25 @@ void ShadowPass::useScene(const SceneGpu& scene) {
 }
 
 ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after) {
-    const uint32_t layers[kShadowArrayCount][2] = {{before.sunLayers, after.sunLayers},
-                                                   {before.localLayers, after.localLayers},
-                                                   {before.areaLayers, after.areaLayers}};
+    // Views by what redraws them: each array, and each of the sun array's cascade layers apart.
+    auto viewsOf = [](const ShadowLayout& layout, ShadowArraySet part) {
+        std::vector<glsl::ShadowView> views;
+        for (const glsl::ShadowView& view : layout.views)
+            if (redrawnWith(layout, view) == part) views.push_back(view);
+        return views;
+    };
+    const uint32_t layers[kShadowArrayCount][2] = {
+        {before.sunLayers - before.sunCascadeLayers, after.sunLayers - after.sunCascadeLayers},
+        {before.localLayers, after.localLayers},
+        {before.areaLayers, after.areaLayers}};
     ShadowArraySet changed = 0;
     for (uint32_t array = 0; array < kShadowArrayCount; ++array)
         if (layers[array][0] != layers[array][1]) changed |= 1u << array;
-    auto viewsOf = [](const ShadowLayout& layout, uint32_t array) {
-        std::vector<glsl::ShadowView> views;
-        for (const glsl::ShadowView& view : layout.views)
-            if (uint32_t(view.params.x) == array) views.push_back(view);
-        return views;
-    };
-    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
-        const std::vector<glsl::ShadowView> a = viewsOf(before, array), b = viewsOf(after, array);
+    for (uint32_t bit = 0; bit < 32; ++bit) {
+        const ShadowArraySet part = 1u << bit;
+        const std::vector<glsl::ShadowView> a = viewsOf(before, part), b = viewsOf(after, part);
         if (a.size() != b.size() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glsl::ShadowView)) != 0)
-            changed |= 1u << array;
+            changed |= part;
     }
     return changed;
 }
@@ -176,12 +215,15 @@ ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayou
 void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const ShadowLayout& layout,
                         VkBuffer viewsBuffer, ShadowArraySet redraw) {
     GpuImage* arrays[kShadowArrayCount] = {&sunMaps, &localMaps, &areaMaps};
-    redraw |= kAllShadowArrays & ~drawn;  // a new array has no maps yet
+    redraw |= kAllShadowArrays & ~drawn;                                         // a new array has no maps yet
+    if (redraw & shadowArrayBit(ShadowArray::Sun)) redraw |= kSunCascadeLayers;  // the sun moved
     // The redrawn arrays are drawn into after the passes that sampled them; the passes that sample
     // them next declare so.
     PassUses drawing;
-    for (uint32_t array = 0; array < kShadowArrayCount; ++array)
-        if ((redraw & (1u << array)) != 0) drawing.use(*arrays[array], access::depthAttachment);
+    for (uint32_t array = 0; array < kShadowArrayCount; ++array) {
+        const bool cascades = array == uint32_t(ShadowArray::Sun) && (redraw & kSunCascadeLayers) != 0;
+        if ((redraw & (1u << array)) != 0 || cascades) drawing.use(*arrays[array], access::depthAttachment);
+    }
     drawing.record(commands);
 
     // Opaque materials need no fragment shader; alpha-tested ones (if any) switch to the second
@@ -245,14 +287,14 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     };
     for (size_t i = 0; i < layout.views.size(); ++i) {
         const glsl::ShadowView& view = layout.views[i];
-        const uint32_t array = uint32_t(view.params.x);
-        if ((redraw & (1u << array)) != 0) renderLayer(*arrays[array], uint32_t(view.params.y), int(i));
+        if ((redraw & redrawnWith(layout, view)) != 0)
+            renderLayer(*arrays[uint32_t(view.params.x)], uint32_t(view.params.y), int(i));
     }
     const uint32_t layers[kShadowArrayCount] = {layout.sunLayers, layout.localLayers, layout.areaLayers};
     for (uint32_t array = 0; array < kShadowArrayCount; ++array)
         if ((redraw & (1u << array)) != 0 && layers[array] == 0) renderLayer(*arrays[array], 0, -1);
 
-    drawn |= redraw;
+    drawn |= redraw & kAllShadowArrays;
 }
 
 }  // namespace vct

@@ -1,8 +1,10 @@
-// Shadow maps for every light: a sun gets an orthographic map fitted to the scene, a spot a
-// perspective map over its cone, a point light six perspective maps (cube faces), and an area light
+// Shadow maps for every light: a sun gets an orthographic map fitted to the scene (and, where the
+// camera needs finer ones, cascades fitted to its view: sun_cascades.h), a spot a perspective map
+// over its cone, a point light six perspective maps (cube faces), and an area light
 // (an emissive surface) a cube seen from just in front of its centre.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "gpu/pipelines.h"
@@ -10,6 +12,7 @@
 #include "gpu_types.h"
 #include "render/scene_gpu.h"
 #include "render/settings.h"
+#include "render/sun_cascades.h"
 #include "scene/area_lights.h"
 #include "scene/scene.h"
 
@@ -22,7 +25,8 @@ struct ShadowLayout {
     std::vector<glsl::GpuLight> lights;  // the punctual lights, then from firstAreaLight on the area lights
     uint32_t firstAreaLight = 0;
     std::vector<glsl::GpuEmitterTriangle> emitterTriangles;
-    uint32_t sunLayers = 0;
+    uint32_t sunLayers = 0;  // the scene-fitted maps, then the cascades (the last sunCascadeLayers)
+    uint32_t sunCascadeLayers = 0;
     uint32_t localLayers = 0;
     uint32_t areaLayers = 0;
 };
@@ -35,10 +39,23 @@ inline constexpr uint32_t kShadowArrayCount = 3;
 using ShadowArraySet = uint32_t;
 inline constexpr ShadowArraySet shadowArrayBit(ShadowArray array) { return 1u << uint32_t(array); }
 inline constexpr ShadowArraySet kAllShadowArrays = (1u << kShadowArrayCount) - 1u;
+// Beside the arrays, a bit for each of the sun array's cascade layers (the camera moved: the
+// scene-fitted maps and the voxels' light stay as they are), the last bit for any beyond.
+inline constexpr ShadowArraySet kSunCascadeLayers = ~kAllShadowArrays;
+inline constexpr ShadowArraySet sunCascadeBit(uint32_t cascadeLayer) {
+    return 1u << std::min(kShadowArrayCount + cascadeLayer, 31u);
+}
 
 // The arrays whose views differ between two layouts: those must be redrawn. Area lights' views
-// depend on the geometry alone, so moving the sun leaves their cubes as they are.
+// depend on the geometry alone, so moving the sun leaves their cubes as they are; a sun's cascades
+// (kSunCascadeLayers) follow the camera, which leaves its scene-fitted map as it is, and only
+// those whose view moved are redrawn: a cascade's texel grid is fixed in the world, so a small
+// step moves the finest ones alone.
 ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after);
+
+// The sun array's layers at most, whatever the camera: the scene-fitted maps and every sun's
+// ResourceSettings::sunCascades (the memory a renderer may come to hold).
+uint32_t mostSunLayers(const ShadowLayout& layout, const RenderSettings& settings);
 
 // The buffers that describe a ShadowLayout to the shaders.
 struct LightBuffers {
@@ -47,8 +64,11 @@ struct LightBuffers {
     VkBuffer emitterTriangles;  // glsl::GpuEmitterTriangle (at least one element, unused without area lights)
 };
 
+// With `cascadeView`, each sun also gets the cascades that view needs (at most
+// ResourceSettings::sunCascades), finest first: GpuLight::cascades points at them.
 ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<AreaLight>& areaLights,
-                           const Bounds& sceneBounds, const RenderSettings& settings);
+                           const Bounds& sceneBounds, const RenderSettings& settings,
+                           const CascadeView* cascadeView = nullptr);
 
 struct ShadowPass {
     ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings, const SceneGpu& scene);

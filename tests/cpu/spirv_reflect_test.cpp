@@ -401,6 +401,7 @@ TEST(SpirvReflect, TheSharedStructsHaveTheirCppOffsetsInTheShaders) {
                          MEMBER(GpuLight, positionRange),
                          MEMBER(GpuLight, direction),
                          MEMBER(GpuLight, spotShadow),
+                         MEMBER(GpuLight, cascades),
                      });
     expectSameLayout(reflectFile("gbuffer.vert"), "GpuVertex",
                      {MEMBER(GpuVertex, positionU), MEMBER(GpuVertex, normalV), MEMBER(GpuVertex, texCoord1),

@@ -56,6 +56,23 @@ TEST(ShadowRedraw, MovingTheSunChangesOnlyTheSunsMaps) {
         << "a shadow map does not depend on a light's intensity";
 }
 
+TEST(ShadowRedraw, MovingTheCameraChangesOnlyTheSunsCascades) {
+    const Scene scene = loadScene(std::string(VCT_SOURCE_DIR) + "/assets/scenes/landscape.gltf");
+    ASSERT_FALSE(scene.cameras.empty());
+    const RenderSettings settings = *findRenderPreset("quality");
+    CascadeView view;
+    view.camera = scene.cameras.front();
+    view.imageHeight = 540;
+    view.nearestGeometry = 0.5f;
+    const ShadowLayout first = layoutShadows(scene.lights, {}, scene.bounds(), settings, &view);
+    ASSERT_GT(first.sunCascadeLayers, 1u);
+    view.camera.position.x += 0.05f;
+    const ShadowArraySet changed =
+        changedShadowArrays(first, layoutShadows(scene.lights, {}, scene.bounds(), settings, &view));
+    EXPECT_NE(changed & sunCascadeBit(0), 0u) << "the finest cascade, of millimetre texels, moved";
+    EXPECT_EQ(changed & ~kSunCascadeLayers, 0u) << "the scene-fitted map stays";
+}
+
 class ShadowRedrawOnGpu : public GpuTest {};
 
 TEST_F(ShadowRedrawOnGpu, TheAreaLightsKeptMapsShadeAsFreshOnesDo) {
