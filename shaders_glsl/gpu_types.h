@@ -65,6 +65,8 @@ struct ShadowView {
     mat4 viewProjection;
     vec4 params;  // x array (0 = sun maps, 1 = local maps), y layer, z texel size at unit distance, w 1 = perspective
     vec4 depthRange;  // perspective views: x near, y far (their depth d maps to f(d − n) / (d(f − n)))
+                      // z: the share of the layer's side the view covers, from its corner (a sun's
+                      // cascade drawn at the image's scale, render/sun_cascades.h; 1 for the rest)
 };
 
 // Bits of FrameConstants.componentFlags: which light components the final image contains.

@@ -221,7 +221,7 @@ ShadowLookup lookupInView(ShadowView view, vec3 position, vec3 normal, float dis
     vec4 clip = lookup.view.viewProjection * vec4(lookup.offsetPosition, 1.0f);
     lookup.centre = shadowMapCoordinates(lookup.view, lookup.offsetPosition);
     lookup.inMap = clip.w > 0.0f && all(greaterThanEqual(lookup.centre.xy, vec2(0.0f))) &&
-                   all(lessThanEqual(lookup.centre.xy, vec2(1.0f))) && lookup.centre.z <= 1.0f;
+                   all(lessThanEqual(lookup.centre.xy, vec2(view.depthRange.z))) && lookup.centre.z <= 1.0f;
     return lookup;
 }
 
@@ -243,7 +243,7 @@ ShadowLookup finestCascade(GpuLight light, vec3 position, vec3 normal, ShadowLoo
     for (uint i = 0u; i < count; ++i) {
         ShadowLookup lookup = lookupInView(shadowViews[first + i], position, normal, 1.0f);
         if (lookup.inMap && all(greaterThanEqual(lookup.centre.xy, vec2(reach))) &&
-            all(lessThanEqual(lookup.centre.xy, vec2(1.0f - reach))))
+            all(lessThanEqual(lookup.centre.xy, vec2(lookup.view.depthRange.z - reach))))
             return lookup;
     }
     return whole;

@@ -161,6 +161,7 @@ int runBench(const std::vector<std::string>& rawArguments) {
             if (m.lightMovingFrame)
                 std::printf(" %7.1f ms moving light (1/%u bounce)", m.lightMovingFrame->cpuMilliseconds,
                             m.bounceSlices);
+            std::printf(" %7.1f ms moving camera", m.cameraMovingFrame.cpuMilliseconds);
             if (m.errors)
                 std::printf("   relMSE full %.4f direct %.4f indirect %.4f   ind.lum %.2f shadow %.2f",
                             m.errors->full.relMse, m.errors->direct.relMse, m.errors->indirect.relMse,

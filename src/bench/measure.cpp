@@ -214,6 +214,20 @@ std::vector<Measurement> measureScene(GpuContext& context, const Scene& scene,
             renderer->setShading(shading);
         }
 
+        const Camera still = renderer->camera();
+        Camera walking = still;
+        const float step = std::min(5.0f / 30.0f, 0.02f * glm::length(scene.bounds().extent()));
+        frames.clear();
+        for (uint32_t i = 0; i < options.frames; ++i) {
+            walking.position += glm::normalize(walking.forward) * step;
+            renderer->setCamera(walking);
+            frames.push_back(renderer->renderFrame());
+            m.cameraMovingWorstMilliseconds = std::max(m.cameraMovingWorstMilliseconds, frames.back().cpuMilliseconds);
+        }
+        m.cameraMovingFrame = medianTiming(frames);
+        renderer->setCamera(still);
+        renderer->renderFrame();  // the next setting's light change starts from the still view
+
         m.imagesFinite = finite(m.fullImage) && finite(direct) && finite(indirect);
         if (references) {
             m.errors =

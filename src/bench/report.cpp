@@ -197,6 +197,8 @@ std::string toJson(const std::vector<Measurement>& measurements, const std::vect
              << (m.lightMovingFrame ? ",\n     \"light_moving\": " + jsonTiming(*m.lightMovingFrame) +
                                           ", \"bounce_slices\": " + std::to_string(m.bounceSlices)
                                     : std::string())
+             << ",\n     \"camera_moving\": " << jsonTiming(m.cameraMovingFrame)
+             << ", \"camera_moving_worst_ms\": " << jsonNumber(m.cameraMovingWorstMilliseconds)
              << ",\n     \"voxelize_ms\": " << jsonNumber(m.voxelizeMilliseconds) << ", \"bounces\": " << m.bounces
              << ", \"bounces_converged\": " << (m.bouncesConverged ? "true" : "false")
              << ", \"ms_per_bounce\": " << jsonNumber(m.bounceMilliseconds)

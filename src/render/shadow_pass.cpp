@@ -23,7 +23,7 @@ glsl::ShadowView perspectiveView(glm::vec3 eye, glm::vec3 forward, float fov, fl
     view.viewProjection = glm::perspective(fov, 1.0f, znear, zfar) * lookAlong(eye, forward, glm::vec3(0, 1, 0));
     // World size of one texel at distance 1 from the light.
     view.params = glm::vec4(float(array), float(layer), 2.0f * std::tan(0.5f * fov) / float(size), 1.0f);
-    view.depthRange = glm::vec4(znear, zfar, 0.0f, 0.0f);
+    view.depthRange = glm::vec4(znear, zfar, 1.0f, 0.0f);
     return view;
 }
 
@@ -83,6 +83,7 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
                                   lookAlong(eye, light.direction, glm::vec3(0, 1, 0));
             view.params = glm::vec4(0.0f, float(layout.sunLayers++),
                                     2.0f * radius / float(settings.resources.sunShadowMapSize), 0.0f);
+            view.depthRange = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);  // the whole layer
             layout.views.push_back(view);
             gpu.spotShadow.w = 1.0f;
         } else if (light.type == LightType::Spot) {
@@ -117,6 +118,7 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
     }
     // The suns' cascades, in layers after every scene-fitted map: the camera moves them alone.
     const uint32_t sunSize = settings.resources.sunShadowMapSize;
+    const uint32_t cascadeSize = cascadeView ? cascadeMapSize(cascadeView->imageHeight, sunSize) : sunSize;
     const std::vector<float> distances =
         cascadeView ? cascadeDistances(*cascadeView, 2.0f * radius / float(sunSize), settings.resources.sunCascades)
                     : std::vector<float>{};
@@ -125,8 +127,8 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
         layout.lights[i].cascades = glm::vec4(float(layout.views.size()), float(distances.size()), 0.0f, 0.0f);
         float nearDistance = 0.0f;
         for (float farDistance : distances) {
-            glsl::ShadowView view =
-                cascadeShadowView(lights[i].direction, *cascadeView, nearDistance, farDistance, sceneBounds, sunSize);
+            glsl::ShadowView view = cascadeShadowView(lights[i].direction, *cascadeView, nearDistance, farDistance,
+                                                      sceneBounds, cascadeSize, sunSize);
             view.params.x = float(ShadowArray::Sun);
             view.params.y = float(layout.sunLayers++);
             layout.views.push_back(view);
@@ -241,8 +243,11 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     bool opaqueBound = true;
 
     // Unused arrays (no light of that kind) are cleared once so they sample as "lit".
+    // A view covering a corner of its layer (a sun's cascade) is cleared and drawn there alone.
     auto renderLayer = [&](GpuImage& maps, uint32_t layer, int viewIndex) {
         const uint32_t size = maps.desc.extent.width;
+        const uint32_t covered =
+            viewIndex >= 0 ? uint32_t(std::lround(layout.views[size_t(viewIndex)].depthRange.z * float(size))) : size;
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = maps.layerViews[layer];
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -250,13 +255,13 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         depth.clearValue.depthStencil = {1.0f, 0};
         VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        rendering.renderArea = {{0, 0}, {size, size}};
+        rendering.renderArea = {{0, 0}, {covered, covered}};
         rendering.layerCount = 1;
         rendering.pDepthAttachment = &depth;
         vkCmdBeginRendering(commands, &rendering);
         if (viewIndex >= 0 && scene.indexCount > 0) {
             const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
-            const VkRect2D scissor{{0, 0}, {size, size}};
+            const VkRect2D scissor{{0, 0}, {covered, covered}};
             vkCmdSetViewport(commands, 0, 1, &viewport);
             vkCmdSetScissor(commands, 0, 1, &scissor);
             const uint32_t index = uint32_t(viewIndex);

@@ -24,7 +24,7 @@ std::vector<float> cascadeDistances(const CascadeView& view, float sceneTexel, u
 }
 
 glsl::ShadowView cascadeShadowView(glm::vec3 direction, const CascadeView& view, float nearDistance, float farDistance,
-                                   const Bounds& sceneBounds, uint32_t mapSize) {
+                                   const Bounds& sceneBounds, uint32_t mapSize, uint32_t layerSize) {
     direction = glm::normalize(direction);
     // The slice's bounding sphere: its centre on the view axis, equally far from the near and the
     // far corners (a and b along the axis, k·a and k·b off it), no farther out than the far plane.
@@ -56,12 +56,24 @@ glsl::ShadowView cascadeShadowView(glm::vec3 direction, const CascadeView& view,
     const float pad = 0.01f * (highest - lowest) + radius * 1e-3f;
     const glm::vec3 eye = snapped + direction * (lowest - pad - glm::dot(snapped, direction));
 
+    // Clip space scaled into the layer's corner: x, y from [−1, 1] to [−1, 2·share − 1].
+    const float share = float(mapSize) / float(layerSize);
+    glm::mat4 intoCorner(1.0f);
+    intoCorner[0][0] = intoCorner[1][1] = share;
+    intoCorner[3][0] = intoCorner[3][1] = share - 1.0f;
     glsl::ShadowView shadowView{};
     shadowView.viewProjection =
-        glm::ortho(-radius, radius, -radius, radius, 0.5f * pad, highest - lowest + 1.5f * pad) *
+        intoCorner * glm::ortho(-radius, radius, -radius, radius, 0.5f * pad, highest - lowest + 1.5f * pad) *
         lookAlong(eye, direction, glm::vec3(0, 1, 0));
     shadowView.params = glm::vec4(0.0f, 0.0f, texel, 0.0f);  // the caller places it in an array
+    shadowView.depthRange = glm::vec4(0.0f, 0.0f, share, 0.0f);
     return shadowView;
+}
+
+uint32_t cascadeMapSize(uint32_t imageHeight, uint32_t layerSize) {
+    uint32_t size = 16;
+    while (size < 8 * imageHeight && size < layerSize) size *= 2;
+    return std::min(size, layerSize);
 }
 
 std::vector<Bounds> triangleBoxes(const Scene& scene) {
