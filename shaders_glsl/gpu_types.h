@@ -65,9 +65,18 @@ struct ShadowView {
     mat4 viewProjection;
     vec4 params;  // x array (0 = sun maps, 1 = local maps), y layer, z texel size at unit distance, w 1 = perspective
     vec4 depthRange;  // perspective views: x near, y far (their depth d maps to f(d − n) / (d(f − n)))
-                      // z: the share of the layer's side the view covers, from its corner (a sun's
-                      // cascade drawn at the image's scale, render/sun_cascades.h; 1 for the rest)
+                      // z: the share of the layer's side the view covers (1 but for a sun's cascade,
+                      // drawn at the image's scale, render/sun_cascades.h), w: its tile of the layer
 };
+
+// Where in its layer (uv) a view's map starts: (0, 0), but for a sun's cascade, one tile of a grid
+// of them that share a layer, in rows from the corner.
+SHARED_FN vec2 shadowTileCorner(ShadowView view) {
+    float share = view.depthRange.z;
+    float tilesPerSide = floor(1.0f / share + 0.5f);
+    float row = floor(view.depthRange.w / tilesPerSide);
+    return vec2(view.depthRange.w - row * tilesPerSide, row) * share;
+}
 
 // Bits of FrameConstants.componentFlags: which light components the final image contains.
 const uint SHOW_DIRECT_DIFFUSE = 1u;

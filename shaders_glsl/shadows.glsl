@@ -220,8 +220,9 @@ ShadowLookup lookupInView(ShadowView view, vec3 position, vec3 normal, float dis
     lookup.offsetPosition = position + normal * (frame.shadowNormalOffset * lookup.texelWorld);
     vec4 clip = lookup.view.viewProjection * vec4(lookup.offsetPosition, 1.0f);
     lookup.centre = shadowMapCoordinates(lookup.view, lookup.offsetPosition);
-    lookup.inMap = clip.w > 0.0f && all(greaterThanEqual(lookup.centre.xy, vec2(0.0f))) &&
-                   all(lessThanEqual(lookup.centre.xy, vec2(view.depthRange.z))) && lookup.centre.z <= 1.0f;
+    vec2 corner = shadowTileCorner(view);
+    lookup.inMap = clip.w > 0.0f && all(greaterThanEqual(lookup.centre.xy, corner)) &&
+                   all(lessThanEqual(lookup.centre.xy, corner + view.depthRange.z)) && lookup.centre.z <= 1.0f;
     return lookup;
 }
 
@@ -242,8 +243,9 @@ ShadowLookup finestCascade(GpuLight light, vec3 position, vec3 normal, ShadowLoo
     float reach = (frame.pcfRadius + 2.0f) / punctualShadowMapSize(SHADOW_ARRAY_SUN).x;
     for (uint i = 0u; i < count; ++i) {
         ShadowLookup lookup = lookupInView(shadowViews[first + i], position, normal, 1.0f);
-        if (lookup.inMap && all(greaterThanEqual(lookup.centre.xy, vec2(reach))) &&
-            all(lessThanEqual(lookup.centre.xy, vec2(lookup.view.depthRange.z - reach))))
+        vec2 corner = shadowTileCorner(lookup.view);
+        if (lookup.inMap && all(greaterThanEqual(lookup.centre.xy, corner + reach)) &&
+            all(lessThanEqual(lookup.centre.xy, corner + lookup.view.depthRange.z - reach)))
             return lookup;
     }
     return whole;

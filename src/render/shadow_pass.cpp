@@ -33,7 +33,8 @@ ShadowArraySet redrawnWith(const ShadowLayout& layout, const glsl::ShadowView& v
     const uint32_t array = uint32_t(view.params.x), layer = uint32_t(view.params.y);
     const uint32_t firstCascade = layout.sunLayers - layout.sunCascadeLayers;
     const bool cascade = array == uint32_t(ShadowArray::Sun) && layer >= firstCascade;
-    return cascade ? sunCascadeBit(layer - firstCascade) : shadowArrayBit(ShadowArray(array));
+    const uint32_t index = (layer - firstCascade) * layout.cascadesPerLayer + uint32_t(view.depthRange.w);
+    return cascade ? sunCascadeBit(index) : shadowArrayBit(ShadowArray(array));
 }
 
 }  // namespace
@@ -116,9 +117,13 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
                                                glm::vec4(triangle.corners[2], triangle.radiance.b)});
         layout.lights.push_back(gpu);
     }
-    // The suns' cascades, in layers after every scene-fitted map: the camera moves them alone.
+    // The suns' cascades, in layers after every scene-fitted map (the camera moves them alone), as
+    // many to a layer as its tiles of their size.
     const uint32_t sunSize = settings.resources.sunShadowMapSize;
     const uint32_t cascadeSize = cascadeView ? cascadeMapSize(cascadeView->imageHeight, sunSize) : sunSize;
+    layout.cascadesPerLayer = (sunSize / cascadeSize) * (sunSize / cascadeSize);
+    const uint32_t firstCascadeLayer = layout.sunLayers;
+    uint32_t cascades = 0;
     const std::vector<float> distances =
         cascadeView ? cascadeDistances(*cascadeView, 2.0f * radius / float(sunSize), settings.resources.sunCascades)
                     : std::vector<float>{};
@@ -127,21 +132,25 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
         layout.lights[i].cascades = glm::vec4(float(layout.views.size()), float(distances.size()), 0.0f, 0.0f);
         float nearDistance = 0.0f;
         for (float farDistance : distances) {
-            glsl::ShadowView view = cascadeShadowView(lights[i].direction, *cascadeView, nearDistance, farDistance,
-                                                      sceneBounds, cascadeSize, sunSize);
+            glsl::ShadowView view =
+                cascadeShadowView(lights[i].direction, *cascadeView, nearDistance, farDistance, sceneBounds,
+                                  cascadeSize, sunSize, cascades % layout.cascadesPerLayer);
             view.params.x = float(ShadowArray::Sun);
-            view.params.y = float(layout.sunLayers++);
+            view.params.y = float(firstCascadeLayer + cascades / layout.cascadesPerLayer);
             layout.views.push_back(view);
-            ++layout.sunCascadeLayers;
+            ++cascades;
             nearDistance = farDistance;
         }
     }
+    layout.sunCascadeLayers = (cascades + layout.cascadesPerLayer - 1) / layout.cascadesPerLayer;
+    layout.sunLayers += layout.sunCascadeLayers;
     return layout;
 }
 
 uint32_t mostSunLayers(const ShadowLayout& layout, const RenderSettings& settings) {
-    const uint32_t sceneFitted = layout.sunLayers - layout.sunCascadeLayers;  // one a sun
-    return sceneFitted * (1 + settings.resources.sunCascades);
+    const uint32_t suns = layout.sunLayers - layout.sunCascadeLayers;  // a scene-fitted map each
+    const uint32_t cascades = suns * settings.resources.sunCascades;
+    return suns + (cascades + layout.cascadesPerLayer - 1) / layout.cascadesPerLayer;
 }
 
 ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings,
@@ -243,11 +252,16 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
     bool opaqueBound = true;
 
     // Unused arrays (no light of that kind) are cleared once so they sample as "lit".
-    // A view covering a corner of its layer (a sun's cascade) is cleared and drawn there alone.
+    // A view covering a tile of its layer (a sun's cascade) is cleared and drawn there alone.
     auto renderLayer = [&](GpuImage& maps, uint32_t layer, int viewIndex) {
         const uint32_t size = maps.desc.extent.width;
-        const uint32_t covered =
-            viewIndex >= 0 ? uint32_t(std::lround(layout.views[size_t(viewIndex)].depthRange.z * float(size))) : size;
+        VkRect2D area{{0, 0}, {size, size}};
+        if (viewIndex >= 0) {
+            const glsl::ShadowView& view = layout.views[size_t(viewIndex)];
+            const glm::vec2 corner = glsl::shadowTileCorner(view) * float(size);
+            const uint32_t covered = uint32_t(std::lround(view.depthRange.z * float(size)));
+            area = {{int32_t(std::lround(corner.x)), int32_t(std::lround(corner.y))}, {covered, covered}};
+        }
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = maps.layerViews[layer];
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -255,13 +269,13 @@ void ShadowPass::record(VkCommandBuffer commands, const SceneGpu& scene, const S
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         depth.clearValue.depthStencil = {1.0f, 0};
         VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        rendering.renderArea = {{0, 0}, {covered, covered}};
+        rendering.renderArea = area;
         rendering.layerCount = 1;
         rendering.pDepthAttachment = &depth;
         vkCmdBeginRendering(commands, &rendering);
         if (viewIndex >= 0 && scene.indexCount > 0) {
             const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
-            const VkRect2D scissor{{0, 0}, {covered, covered}};
+            const VkRect2D scissor = area;
             vkCmdSetViewport(commands, 0, 1, &viewport);
             vkCmdSetScissor(commands, 0, 1, &scissor);
             const uint32_t index = uint32_t(viewIndex);

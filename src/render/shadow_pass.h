@@ -27,6 +27,7 @@ struct ShadowLayout {
     std::vector<glsl::GpuEmitterTriangle> emitterTriangles;
     uint32_t sunLayers = 0;  // the scene-fitted maps, then the cascades (the last sunCascadeLayers)
     uint32_t sunCascadeLayers = 0;
+    uint32_t cascadesPerLayer = 1;  // the tiles of a cascade layer (glsl::shadowTileCorner)
     uint32_t localLayers = 0;
     uint32_t areaLayers = 0;
 };
@@ -39,11 +40,11 @@ inline constexpr uint32_t kShadowArrayCount = 3;
 using ShadowArraySet = uint32_t;
 inline constexpr ShadowArraySet shadowArrayBit(ShadowArray array) { return 1u << uint32_t(array); }
 inline constexpr ShadowArraySet kAllShadowArrays = (1u << kShadowArrayCount) - 1u;
-// Beside the arrays, a bit for each of the sun array's cascade layers (the camera moved: the
-// scene-fitted maps and the voxels' light stay as they are), the last bit for any beyond.
+// Beside the arrays, a bit for each of the suns' cascades (the camera moved: the scene-fitted maps
+// and the voxels' light stay as they are), the last bit for any beyond.
 inline constexpr ShadowArraySet kSunCascadeLayers = ~kAllShadowArrays;
-inline constexpr ShadowArraySet sunCascadeBit(uint32_t cascadeLayer) {
-    return 1u << std::min(kShadowArrayCount + cascadeLayer, 31u);
+inline constexpr ShadowArraySet sunCascadeBit(uint32_t cascade) {
+    return 1u << std::min(kShadowArrayCount + cascade, 31u);
 }
 
 // The arrays whose views differ between two layouts: those must be redrawn. Area lights' views

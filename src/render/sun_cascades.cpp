@@ -24,7 +24,7 @@ std::vector<float> cascadeDistances(const CascadeView& view, float sceneTexel, u
 }
 
 glsl::ShadowView cascadeShadowView(glm::vec3 direction, const CascadeView& view, float nearDistance, float farDistance,
-                                   const Bounds& sceneBounds, uint32_t mapSize, uint32_t layerSize) {
+                                   const Bounds& sceneBounds, uint32_t mapSize, uint32_t layerSize, uint32_t tile) {
     direction = glm::normalize(direction);
     // The slice's bounding sphere: its centre on the view axis, equally far from the near and the
     // far corners (a and b along the axis, k·a and k·b off it), no farther out than the far plane.
@@ -56,17 +56,19 @@ glsl::ShadowView cascadeShadowView(glm::vec3 direction, const CascadeView& view,
     const float pad = 0.01f * (highest - lowest) + radius * 1e-3f;
     const glm::vec3 eye = snapped + direction * (lowest - pad - glm::dot(snapped, direction));
 
-    // Clip space scaled into the layer's corner: x, y from [−1, 1] to [−1, 2·share − 1].
-    const float share = float(mapSize) / float(layerSize);
-    glm::mat4 intoCorner(1.0f);
-    intoCorner[0][0] = intoCorner[1][1] = share;
-    intoCorner[3][0] = intoCorner[3][1] = share - 1.0f;
+    // Clip space scaled into the tile: x, y from [−1, 1] to [2·corner − 1, 2·(corner + share) − 1].
     glsl::ShadowView shadowView{};
+    const float share = float(mapSize) / float(layerSize);
+    shadowView.depthRange = glm::vec4(0.0f, 0.0f, share, float(tile));
+    const glm::vec2 corner = glsl::shadowTileCorner(shadowView);
+    glm::mat4 intoTile(1.0f);
+    intoTile[0][0] = intoTile[1][1] = share;
+    intoTile[3][0] = 2.0f * corner.x + share - 1.0f;
+    intoTile[3][1] = 2.0f * corner.y + share - 1.0f;
     shadowView.viewProjection =
-        intoCorner * glm::ortho(-radius, radius, -radius, radius, 0.5f * pad, highest - lowest + 1.5f * pad) *
+        intoTile * glm::ortho(-radius, radius, -radius, radius, 0.5f * pad, highest - lowest + 1.5f * pad) *
         lookAlong(eye, direction, glm::vec3(0, 1, 0));
     shadowView.params = glm::vec4(0.0f, 0.0f, texel, 0.0f);  // the caller places it in an array
-    shadowView.depthRange = glm::vec4(0.0f, 0.0f, share, 0.0f);
     return shadowView;
 }
 

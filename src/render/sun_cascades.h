@@ -39,10 +39,11 @@ std::vector<float> cascadeDistances(const CascadeView& view, float sceneTexel, u
 // `farDistance` (its bounding sphere, with the texel's snapping), and in depth every part of the
 // scene between it and the sun. Its texel grid is fixed in the world: a camera that moves shifts
 // it by whole texels, so shadow edges do not crawl. The map is `mapSize` texels a side, drawn into
-// the corner of a layer `layerSize` a side (depthRange.z holds the share it covers). Its params hold
-// the texel (z); the caller sets the array and layer (x, y).
+// tile `tile` of a layer `layerSize` a side (depthRange.z holds the share of the side it covers, w
+// the tile: glsl::shadowTileCorner). Its params hold the texel (z); the caller sets the array and
+// layer (x, y).
 glsl::ShadowView cascadeShadowView(glm::vec3 direction, const CascadeView& view, float nearDistance, float farDistance,
-                                   const Bounds& sceneBounds, uint32_t mapSize, uint32_t layerSize);
+                                   const Bounds& sceneBounds, uint32_t mapSize, uint32_t layerSize, uint32_t tile);
 
 // A cascade's map side for an image `imageHeight` pixels high: eight texels a pixel along the
 // image's height, a power of two, at most the sun array's `layerSize`. The shadows' error falls with

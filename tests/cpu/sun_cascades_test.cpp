@@ -73,16 +73,17 @@ TEST(SunCascades, EachHoldsItsSliceAndEveryOccluderTowardsTheSun) {
     ASSERT_EQ(distances.size(), 4u);
     float nearDistance = 0.0f, lastTexel = 0.0f;
     for (float farDistance : distances) {
-        // Drawn into a quarter of the layer's side, from its corner.
+        // Drawn into the last of four tiles of its layer.
         const glsl::ShadowView shadow =
-            cascadeShadowView(kSun, view, nearDistance, farDistance, kLandscape, kMapSize / 2, kMapSize);
+            cascadeShadowView(kSun, view, nearDistance, farDistance, kLandscape, kMapSize / 2, kMapSize, 3);
         EXPECT_FLOAT_EQ(shadow.depthRange.z, 0.5f);
+        EXPECT_EQ(glsl::shadowTileCorner(shadow), glm::vec2(0.5f, 0.5f)) << "the fourth of four tiles";
         for (const glm::vec3& corner : sliceCorners(view, nearDistance, farDistance)) {
             const glm::vec3 map = mapCoordinates(shadow, corner);
-            EXPECT_GE(map.x, 0.0f);
-            EXPECT_LE(map.x, 0.5f);
-            EXPECT_GE(map.y, 0.0f);
-            EXPECT_LE(map.y, 0.5f);
+            EXPECT_GE(map.x, 0.5f);
+            EXPECT_LE(map.x, 1.0f);
+            EXPECT_GE(map.y, 0.5f);
+            EXPECT_LE(map.y, 1.0f);
         }
         // Every corner of the scene lies between the map's near and far planes: a mountain outside
         // the slice still shadows it.
@@ -110,9 +111,9 @@ TEST(SunCascades, AMapHasEightTexelsAPixelAtMostTheLayersSize) {
 
 TEST(SunCascades, AMovingCameraShiftsTheTexelGridByWholeTexels) {
     CascadeView view = landscapeView(0.3f);
-    const glsl::ShadowView before = cascadeShadowView(kSun, view, 0.0f, 20.0f, kLandscape, kMapSize, kMapSize);
+    const glsl::ShadowView before = cascadeShadowView(kSun, view, 0.0f, 20.0f, kLandscape, kMapSize, kMapSize, 0);
     view.camera.position += glm::vec3(0.137f, 0.05f, -0.291f);
-    const glsl::ShadowView after = cascadeShadowView(kSun, view, 0.0f, 20.0f, kLandscape, kMapSize, kMapSize);
+    const glsl::ShadowView after = cascadeShadowView(kSun, view, 0.0f, 20.0f, kLandscape, kMapSize, kMapSize, 0);
     ASSERT_FLOAT_EQ(before.params.z, after.params.z) << "the same slice: the same texel";
     const glm::vec3 point(3.0f, 0.5f, 1.0f);
     const glm::vec2 shift =
