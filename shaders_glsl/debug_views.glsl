@@ -1,5 +1,7 @@
-// Views for understanding: G-buffer channels, ambient occlusion, and the voxel grid itself.
-// Requires the shading pass's bindings (G-buffer, voxel volumes) and cone_tracing.glsl.
+// Views for understanding: G-buffer channels, ambient occlusion, the voxel grid itself, and which
+// sun shadow map shades each surface.
+// Requires the shading pass's bindings (G-buffer, voxel volumes, lights), cone_tracing.glsl and
+// direct_light.glsl (its shadows).
 #ifndef VCT_DEBUG_VIEWS_GLSL
 #define VCT_DEBUG_VIEWS_GLSL
 
@@ -55,12 +57,35 @@ vec3 voxelView(ivec2 pixel, uint view, float mip) {
     return vec3(0.0f);
 }
 
+// Which of the first sun's shadow maps shades the surface (render/sun_cascades.h): its cascades
+// from the finest red, green, blue, yellow, magenta, cyan, the scene-fitted map grey; lit by the
+// sun's cosine so the scene stays legible. Black without a sun.
+vec3 sunCascadeView(vec3 position, vec3 normal) {
+    const vec3 palette[7] = vec3[7](vec3(1.0f, 0.25f, 0.2f), vec3(0.3f, 0.9f, 0.3f), vec3(0.3f, 0.45f, 1.0f),
+                                    vec3(1.0f, 0.9f, 0.2f), vec3(0.9f, 0.3f, 0.9f), vec3(0.2f, 0.9f, 0.9f),
+                                    vec3(0.55f));
+    for (uint i = 0u; i < frame.firstAreaLight; ++i) {
+        GpuLight light = lights[i];
+        if (uint(light.radiantIntensity.w) != LIGHT_DIRECTIONAL) continue;
+        ShadowLookup whole = shadowLookup(light, position, normal, 1.0f);
+        ShadowLookup chosen = finestCascade(light, position, normal, whole);
+        uint first = uint(light.cascades.x), count = uint(light.cascades.y);
+        uint index = 6u;
+        for (uint c = 0u; c < min(count, 6u); ++c)
+            if (shadowViews[first + c].viewProjection == chosen.view.viewProjection) index = c;
+        return palette[index] * (0.35f + 0.65f * max(dot(normal, -light.direction.xyz), 0.0f));
+    }
+    return vec3(0.0f);
+}
+
 vec3 debugView(ivec2 pixel, vec4 positionMaterial) {
     uint view = frame.debugView;
-    if (view >= DEBUG_VOXEL_ALBEDO) return voxelView(pixel, view, float(frame.debugVoxelMip));
+    if (view >= DEBUG_VOXEL_ALBEDO && view <= DEBUG_VOXEL_RADIANCE)
+        return voxelView(pixel, view, float(frame.debugVoxelMip));
     if (positionMaterial.w < 0.5f) return vec3(0.0f);
     vec4 normalSide = texelFetch(gNormal, pixel, 0);
     vec3 normal = normalSide.xyz;
+    if (view == DEBUG_SUN_CASCADES) return sunCascadeView(positionMaterial.xyz, normal);
     if (view == DEBUG_BASE_COLOR) return texelFetch(gBaseColor, pixel, 0).rgb;
     if (view == DEBUG_NORMAL) return normal * 0.5f + 0.5f;
     if (view == DEBUG_DEPTH) {

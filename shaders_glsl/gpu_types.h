@@ -156,7 +156,8 @@ const uint DEBUG_AMBIENT_OCCLUSION = 4u;
 const uint DEBUG_VOXEL_ALBEDO = 5u;
 const uint DEBUG_VOXEL_NORMAL = 6u;
 const uint DEBUG_VOXEL_RADIANCE = 7u;
-const uint DEBUG_VIEW_COUNT = 8u;
+const uint DEBUG_SUN_CASCADES = 8u;
+const uint DEBUG_VIEW_COUNT = 9u;
 
 
 VCT_SHARED_END

@@ -51,8 +51,8 @@ vec3 voxelNormalAt(ivec3 cell) { return texelFetch(voxelNormal, cell, 0).xyz; }
 #include "surface_planes.glsl"
 #include "cone_tracing.glsl"
 #include "reduced_diffuse.glsl"
-#include "debug_views.glsl"
 #include "direct_light.glsl"
+#include "debug_views.glsl"
 
 layout(location = 0) out vec4 outRadiance;
 

@@ -18,8 +18,8 @@ const char* renderModeName(RenderMode mode) {
 
 const char* debugViewLabel(DebugView view) {
     static const char* const labels[debugViewCount] = {
-        "lit image",         "base colour",  "normal",       "depth",
-        "ambient occlusion", "voxel albedo", "voxel normal", "voxel radiance",
+        "lit image",    "base colour",  "normal",         "depth",        "ambient occlusion",
+        "voxel albedo", "voxel normal", "voxel radiance", "sun cascades",
     };
     const uint32_t index = uint32_t(view);
     return index < debugViewCount ? labels[index] : "?";

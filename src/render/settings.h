@@ -34,6 +34,7 @@ enum class DebugView : uint32_t {
     VoxelAlbedo = glsl::DEBUG_VOXEL_ALBEDO,
     VoxelNormal = glsl::DEBUG_VOXEL_NORMAL,
     VoxelRadiance = glsl::DEBUG_VOXEL_RADIANCE,
+    SunCascades = glsl::DEBUG_SUN_CASCADES,
 };
 constexpr uint32_t debugViewCount = glsl::DEBUG_VIEW_COUNT;
 // Its label in the viewer, e.g. "voxel albedo"; DebugView::None is "lit image".

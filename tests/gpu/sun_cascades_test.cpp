@@ -66,6 +66,26 @@ TEST_F(SunCascadesOnGpu, AMovedCameraRedrawsTheCascadesAloneAndShadesAsAFreshRen
         << "the frame after moving the camera differs from a fresh renderer's";
 }
 
+TEST_F(SunCascadesOnGpu, TheDebugViewShowsTheFinestCascadeNearAndCoarserOnesBeyond) {
+    // The landscape's door is a few metres away and the hills beyond it hundreds: the finest
+    // cascade's red holds the near ground, and some other map (green, blue, yellow or grey) the rest.
+    RenderSettings settings = directAt128(4);
+    settings.shading.stillSamples = 1;
+    settings.shading.debugView = DebugView::SunCascades;
+    Renderer renderer(gpu(), loadScene(kLandscape), settings);
+    renderer.renderFrame();
+    const Image image = renderer.readImage();
+    size_t finest = 0, others = 0;
+    for (size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+        const float r = image.rgb[i], g = image.rgb[i + 1], b = image.rgb[i + 2];
+        if (r + g + b <= 0.0f) continue;  // the sky
+        (r > 2.0f * g && r > 2.0f * b ? finest : others) += 1;
+    }
+    std::printf("[ cascades ] debug view: %zu pixels in the finest cascade, %zu in the others\n", finest, others);
+    EXPECT_GT(finest, image.rgb.size() / 3 / 20) << "the near ground in the finest cascade";
+    EXPECT_GT(others, image.rgb.size() / 3 / 20) << "the far ground in coarser maps";
+}
+
 TEST_F(SunCascadesOnGpu, ASmallSceneSeenFromOutsideGetsNone) {
     // The Cornell box lit by the sun, its camera 0.8 m in front: its map's texels are finer than
     // the pixels everywhere the camera sees, so cascades would only cost.
