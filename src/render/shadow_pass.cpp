@@ -150,7 +150,10 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
 uint32_t mostSunLayers(const ShadowLayout& layout, const RenderSettings& settings) {
     const uint32_t suns = layout.sunLayers - layout.sunCascadeLayers;  // a scene-fitted map each
     const uint32_t cascades = suns * settings.resources.sunCascades;
-    return suns + (cascades + layout.cascadesPerLayer - 1) / layout.cascadesPerLayer;
+    const uint32_t layerSize = settings.resources.sunShadowMapSize;
+    const uint32_t tilesPerSide = layerSize / cascadeMapSize(settings.image.height, layerSize);
+    const uint32_t perLayer = tilesPerSide * tilesPerSide;
+    return suns + (cascades + perLayer - 1) / perLayer;
 }
 
 ShadowPass::ShadowPass(GpuContext& context, const ShadowLayout& layout, const RenderSettings& settings,
@@ -200,7 +203,7 @@ void ShadowPass::useScene(const SceneGpu& scene) {
 }
 
 ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after) {
-    // Views by what redraws them: each array, and each of the sun array's cascade layers apart.
+    // Views by what redraws them: each array, and each sun cascade apart.
     auto viewsOf = [](const ShadowLayout& layout, ShadowArraySet part) {
         std::vector<glsl::ShadowView> views;
         for (const glsl::ShadowView& view : layout.views)

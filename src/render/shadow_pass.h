@@ -55,7 +55,8 @@ inline constexpr ShadowArraySet sunCascadeBit(uint32_t cascade) {
 ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after);
 
 // The sun array's layers at most, whatever the camera: the scene-fitted maps and every sun's
-// ResourceSettings::sunCascades (the memory a renderer may come to hold).
+// ResourceSettings::sunCascades, as tiles for the settings' image height (the memory a renderer
+// may come to hold until it is resized).
 uint32_t mostSunLayers(const ShadowLayout& layout, const RenderSettings& settings);
 
 // The buffers that describe a ShadowLayout to the shaders.
