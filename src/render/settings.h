@@ -97,8 +97,8 @@ struct ResourceSettings {
     uint32_t bounces = kConvergedBounces;
     uint32_t sunShadowMapSize = 4096;  // directional lights
     // The most view-fitted maps (cascades, sun_cascades.h) a sun gets beside its scene-fitted one,
-    // each of sunShadowMapSize²; as many as the camera's nearest geometry needs, none in most
-    // small scenes. 0: the scene-fitted map alone.
+    // each a tile of the sun array at eight texels a pixel of image height; as many as the camera's
+    // nearest geometry needs, none in most small scenes. 0: the scene-fitted map alone.
     uint32_t sunCascades = 4;
     uint32_t localShadowMapSize = 1024;  // each spot light and each cube face of a point light
     // Each cube face of an area light: their shadows are soft, tested by rays that are spread over
