@@ -15,11 +15,8 @@ glm::mat4 lookAlong(glm::vec3 eye, glm::vec3 forward, glm::vec3 up) {
 
 static float farthestCornerDistance(glm::vec3 from, const Bounds& bounds) {
     float farthest = 0.0f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 point((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
-                              (corner & 4) ? bounds.max.z : bounds.min.z);
-        farthest = std::max(farthest, glm::distance(from, point));
-    }
+    for (int corner = 0; corner < 8; ++corner)
+        farthest = std::max(farthest, glm::distance(from, bounds.corner(corner)));
     return farthest;
 }
 

@@ -49,12 +49,8 @@ ShadowLayout layoutShadows(const std::vector<Light>& lights, const std::vector<A
     // the same shadows.
     auto farthestCorner = [&](const glm::vec3& eye) {
         float farthest = 0.0f;
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 point((corner & 1) ? sceneBounds.max.x : sceneBounds.min.x,
-                                  (corner & 2) ? sceneBounds.max.y : sceneBounds.min.y,
-                                  (corner & 4) ? sceneBounds.max.z : sceneBounds.min.z);
-            farthest = std::max(farthest, glm::distance(eye, point));
-        }
+        for (int corner = 0; corner < 8; ++corner)
+            farthest = std::max(farthest, glm::distance(eye, sceneBounds.corner(corner)));
         return std::max(farthest * 1.01f, 1e-5f);
     };
     auto addCube = [&](const glm::vec3& eye, ShadowArray array) {

@@ -47,11 +47,8 @@ glsl::ShadowView cascadeShadowView(glm::vec3 direction, const CascadeView& view,
     // In depth, the whole scene along the light: an occluder outside the slice still casts into it.
     float lowest = std::numeric_limits<float>::max(), highest = -lowest;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 point((corner & 1) ? sceneBounds.max.x : sceneBounds.min.x,
-                              (corner & 2) ? sceneBounds.max.y : sceneBounds.min.y,
-                              (corner & 4) ? sceneBounds.max.z : sceneBounds.min.z);
-        lowest = std::min(lowest, glm::dot(point, direction));
-        highest = std::max(highest, glm::dot(point, direction));
+        lowest = std::min(lowest, glm::dot(sceneBounds.corner(corner), direction));
+        highest = std::max(highest, glm::dot(sceneBounds.corner(corner), direction));
     }
     const float pad = 0.01f * (highest - lowest) + radius * 1e-3f;
     const glm::vec3 eye = snapped + direction * (lowest - pad - glm::dot(snapped, direction));

@@ -17,10 +17,7 @@ TEST(DefaultCamera, FramesEveryCornerOfTheSceneInASquareImage) {
         const glm::vec3 up = glm::cross(right, camera.forward);
         const float tanHalf = std::tan(0.5f * camera.yfov);
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 point((corner & 1) ? bounds.max.x : bounds.min.x,
-                                  (corner & 2) ? bounds.max.y : bounds.min.y,
-                                  (corner & 4) ? bounds.max.z : bounds.min.z);
-            const glm::vec3 toPoint = point - camera.position;
+            const glm::vec3 toPoint = bounds.corner(corner) - camera.position;
             const float depth = glm::dot(toPoint, camera.forward);
             ASSERT_GT(depth, camera.znear) << corner;
             EXPECT_LE(std::abs(glm::dot(toPoint, right)) / depth, tanHalf) << corner;

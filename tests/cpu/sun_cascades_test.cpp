@@ -88,10 +88,7 @@ TEST(SunCascades, EachHoldsItsSliceAndEveryOccluderTowardsTheSun) {
         // Every corner of the scene lies between the map's near and far planes: a mountain outside
         // the slice still shadows it.
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 point((corner & 1) ? kLandscape.max.x : kLandscape.min.x,
-                                  (corner & 2) ? kLandscape.max.y : kLandscape.min.y,
-                                  (corner & 4) ? kLandscape.max.z : kLandscape.min.z);
-            const float depth = mapCoordinates(shadow, point).z;
+            const float depth = mapCoordinates(shadow, kLandscape.corner(corner)).z;
             EXPECT_GT(depth, 0.0f);
             EXPECT_LT(depth, 1.0f);
         }
