@@ -15,6 +15,7 @@
 #include "render/frame_plan.h"
 #include "render/renderer_limits.h"
 #include "render/scene_analysis.h"
+#include "render/sun_cascades.h"
 #include "render/voxel_grid_fit.h"
 
 namespace vct {
@@ -133,8 +134,7 @@ void Renderer::applyLights(const std::vector<Light>& lights) {
     lights_ = lights;
     shadowedLights_ = all;
     for (Light& light : shadowedLights_) light.position -= facts_.origin;
-    const CascadeView view = cascadeView();
-    layOutShadows(layoutShadows(shadowedLights_, facts_.areaLights, facts_.bounds, settings_, &view));
+    layOutShadows(currentShadowLayout());
     // The brightest emitter stands in for the scene's materials in the storage scale.
     Scene emitters;
     Material brightest;
@@ -166,22 +166,26 @@ void Renderer::layOutShadows(ShadowLayout layout) {
     staleShadowArrays_ |= changedShadowArrays(previous, now);
 }
 
-CascadeView Renderer::cascadeView() const {
+bool Renderer::castsSunCascades() const {
+    return settings_.resources.sunCascades > 0 &&
+           std::any_of(shadowedLights_.begin(), shadowedLights_.end(),
+                       [](const Light& light) { return light.type == LightType::Directional; });
+}
+
+ShadowLayout Renderer::currentShadowLayout() const {
+    if (!castsSunCascades()) return layoutShadows(shadowedLights_, facts_.areaLights, facts_.bounds, settings_);
     CascadeView view;
     view.camera = camera_;
     view.camera.position -= facts_.origin;
     view.aspect = float(settings_.image.width) / float(settings_.image.height);
     view.imageHeight = settings_.image.height;
     view.nearestGeometry = nearestBoxDistance(triangleBoxes_, view.camera.position);
-    return view;
+    return layoutShadows(shadowedLights_, facts_.areaLights, facts_.bounds, settings_, &view);
 }
 
 void Renderer::refitSunCascades() {
-    const bool anySun = std::any_of(shadowedLights_.begin(), shadowedLights_.end(),
-                                    [](const Light& light) { return light.type == LightType::Directional; });
-    if (!anySun || settings_.resources.sunCascades == 0) return;
-    const CascadeView view = cascadeView();
-    ShadowLayout layout = layoutShadows(shadowedLights_, facts_.areaLights, facts_.bounds, settings_, &view);
+    if (!castsSunCascades()) return;
+    ShadowLayout layout = currentShadowLayout();
     if (changedShadowArrays(lightTable_.layout(), layout) == 0) return;
     layOutShadows(std::move(layout));
     stale_.shadows = true;  // the cascades' layers alone: the voxels' light stays as it is

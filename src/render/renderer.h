@@ -28,7 +28,6 @@
 #include "render/shade_pass.h"
 #include "render/shadow_pass.h"
 #include "render/sky_image.h"
-#include "render/sun_cascades.h"
 #include "render/voxel_volumes.h"
 #include "render/voxelize_pass.h"
 #include "scene/environment_sun.h"
@@ -127,8 +126,11 @@ private:
     // Holds `layout` in the light table, with shadow arrays large enough for it, and marks the maps
     // whose views moved for the next shadow pass.
     void layOutShadows(ShadowLayout layout);
-    // What the suns' cascades are fitted to: the camera and the image as they are now.
-    CascadeView cascadeView() const;
+    // Whether a sun casts shadows through cascades (ResourceSettings::sunCascades).
+    bool castsSunCascades() const;
+    // The lights' shadow views, with the suns' cascades fitted to the camera and the image as they
+    // are now (the nearest geometry is looked for only where a sun has cascades).
+    ShadowLayout currentShadowLayout() const;
     // After the camera moved or the image was resized: new cascades where they changed, redrawn on
     // the next frame.
     void refitSunCascades();

@@ -1,6 +1,8 @@
 #include "render/shadow_pass.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -199,13 +201,15 @@ void ShadowPass::useScene(const SceneGpu& scene) {
 }
 
 ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayout& after) {
-    // Views by what redraws them: each array, and each sun cascade apart.
-    auto viewsOf = [](const ShadowLayout& layout, ShadowArraySet part) {
-        std::vector<glsl::ShadowView> views;
+    // Views by the bit that redraws them: each array, and each sun cascade apart.
+    using ViewsByBit = std::array<std::vector<glsl::ShadowView>, 32>;
+    auto viewsByBit = [](const ShadowLayout& layout) {
+        ViewsByBit views;
         for (const glsl::ShadowView& view : layout.views)
-            if (redrawnWith(layout, view) == part) views.push_back(view);
+            views[std::countr_zero(redrawnWith(layout, view))].push_back(view);
         return views;
     };
+    const ViewsByBit a = viewsByBit(before), b = viewsByBit(after);
     const uint32_t layers[kShadowArrayCount][2] = {
         {before.sunLayers - before.sunCascadeLayers, after.sunLayers - after.sunCascadeLayers},
         {before.localLayers, after.localLayers},
@@ -213,12 +217,10 @@ ShadowArraySet changedShadowArrays(const ShadowLayout& before, const ShadowLayou
     ShadowArraySet changed = 0;
     for (uint32_t array = 0; array < kShadowArrayCount; ++array)
         if (layers[array][0] != layers[array][1]) changed |= 1u << array;
-    for (uint32_t bit = 0; bit < 32; ++bit) {
-        const ShadowArraySet part = 1u << bit;
-        const std::vector<glsl::ShadowView> a = viewsOf(before, part), b = viewsOf(after, part);
-        if (a.size() != b.size() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glsl::ShadowView)) != 0)
-            changed |= part;
-    }
+    for (uint32_t bit = 0; bit < 32; ++bit)
+        if (a[bit].size() != b[bit].size() ||
+            std::memcmp(a[bit].data(), b[bit].data(), a[bit].size() * sizeof(glsl::ShadowView)) != 0)
+            changed |= 1u << bit;
     return changed;
 }
 
